@@ -1,0 +1,171 @@
+//! Bresenham-style edge stepping: one division per edge, then additions only.
+
+use crate::setup::Lane;
+
+/// How an edge's exact crossing `X` on a row becomes a pixel bound.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Rounding {
+    /// `ceil(X)`: the first pixel at or right of the edge (a left bound), or the exclusive end
+    /// of a right bound that leaves out pixels exactly on the edge.
+    Ceil,
+    /// `floor(X) + 1`: the exclusive end of a right bound that keeps pixels on the edge.
+    FloorPlusOne,
+}
+
+/// Walks an edge from its upper to its lower vertex one row at a time.
+///
+/// At row `ya + n` the edge crosses `X = xa + dx * n / dy`; the stepper holds the bound
+/// `x = xa + floor((dx * n + k) / dy)` (`k = dy - 1` for [`Rounding::Ceil`], `k = dy` for
+/// [`Rounding::FloorPlusOne`]) and the remainder of that division as an error term, kept in
+/// `-dy..0` so that it never overflows the lane. Each row adds the quotient and remainder of
+/// `dx / dy`, computed once.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct EdgeStepper<T> {
+    /// The current bound.
+    pub(crate) x: T,
+    /// Remainder minus `dy`, in `-dy..0`.
+    error: T,
+    /// `floor(dx / dy)`.
+    step: T,
+    /// `dx mod dy`, in `0..dy`.
+    remainder: T,
+    dy: T,
+}
+
+impl<T: Lane> EdgeStepper<T> {
+    /// Starts the edge from `(xa, ya)` to `(xb, yb)` (`ya < yb`) at row `row`, which must lie in
+    /// `ya..=yb`.
+    #[inline(always)]
+    pub(crate) fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T) -> Self {
+        let (xa, ya) = upper;
+        let dy = lower.1 - ya;
+        let dx = lower.0 - xa;
+        debug_assert!(dy > T::ZERO && row >= ya && row <= lower.1);
+        let (step, remainder) = dx.div_rem_floor(dy);
+        let rows_in = row - ya;
+        let (x, error) = if rows_in == T::ZERO {
+            // At the upper vertex the crossing is the integer `xa`: no division needed.
+            match rounding {
+                Rounding::Ceil => (xa, T::ZERO - T::ONE),
+                Rounding::FloorPlusOne => (xa + T::ONE, T::ZERO - dy),
+            }
+        } else {
+            Self::jump(xa, dy, step, remainder, rounding, rows_in)
+        };
+        Self {
+            x,
+            error,
+            step,
+            remainder,
+            dy,
+        }
+    }
+
+    /// The bound and error term `rows_in` rows below the upper vertex (`0 < rows_in <= dy`),
+    /// for edges that start above the clip window.
+    ///
+    /// `dx * n + k = step * dy * n + (remainder * n + k)`, and `remainder * n + k <= dy^2`
+    /// fits `u64` for any `i32` vertices, so no 128-bit arithmetic is needed.
+    #[inline(never)]
+    fn jump(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_in: T) -> (T, T) {
+        let (dy, n) = (dy.to_i64(), rows_in.to_i64());
+        let k = match rounding {
+            Rounding::Ceil => dy - 1,
+            Rounding::FloorPlusOne => dy,
+        };
+        let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
+        let (quotient, rem) = div_rem_u64(numerator, dy as u64);
+        // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
+        let x = xa.to_i64() + step.to_i64() * n + quotient as i64;
+        (T::from_i64(x), T::from_i64(rem as i64 - dy))
+    }
+
+    /// Moves to the next row.
+    #[inline(always)]
+    pub(crate) fn advance(&mut self) {
+        self.x += self.step;
+        self.error += self.remainder;
+        if self.error >= T::ZERO {
+            self.x += T::ONE;
+            self.error -= self.dy;
+        }
+    }
+}
+
+/// `u64` division that stays in 32 bits when it can: on Cortex-M0 a 64-bit division is a long
+/// library call, a 32-bit one a short one.
+#[inline(always)]
+fn div_rem_u64(numerator: u64, divisor: u64) -> (u64, u64) {
+    match (u32::try_from(numerator), u32::try_from(divisor)) {
+        (Ok(n), Ok(d)) => (u64::from(n / d), u64::from(n % d)),
+        _ => (numerator / divisor, numerator % divisor),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Exact bound by direct division, for comparison.
+    fn exact(xa: i64, ya: i64, xb: i64, yb: i64, rounding: Rounding, row: i64) -> i64 {
+        let (dx, dy) = (i128::from(xb - xa), i128::from(yb - ya));
+        let num = dx * i128::from(row - ya);
+        let bound = match rounding {
+            Rounding::Ceil => num.div_euclid(dy) + i128::from(num.rem_euclid(dy) != 0),
+            Rounding::FloorPlusOne => num.div_euclid(dy) + 1,
+        };
+        i64::try_from(bound).unwrap() + xa
+    }
+
+    fn check<T: Lane>(a: (i32, i32), b: (i32, i32)) {
+        let lane = |p: (i32, i32)| (T::from_i32(p.0), T::from_i32(p.1));
+        let rows = i64::from(b.1) - i64::from(a.1);
+        for rounding in [Rounding::Ceil, Rounding::FloorPlusOne] {
+            // Start at every row of a short edge, and at a few rows of a long one.
+            let starts: [i64; 4] = [0, 1, rows / 2, rows];
+            for start in starts {
+                let row = T::from_i64(i64::from(a.1) + start);
+                let mut edge = EdgeStepper::start(lane(a), lane(b), rounding, row);
+                let mut n = start;
+                loop {
+                    let want = exact(
+                        a.0.into(),
+                        a.1.into(),
+                        b.0.into(),
+                        b.1.into(),
+                        rounding,
+                        i64::from(a.1) + n,
+                    );
+                    assert_eq!(edge.x.to_i64(), want, "{a:?}->{b:?} {rounding:?} row {n}");
+                    if n == rows || n > start + 50 {
+                        break;
+                    }
+                    edge.advance();
+                    n += 1;
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn steps_match_exact_division() {
+        let edges = [
+            ((0, 0), (7, 3)),
+            ((0, 0), (-7, 3)),
+            ((5, -2), (5, 9)),
+            ((3, 0), (-40, 1)),
+            ((-100, -50), (31, 77)),
+            ((0, 0), (1, 1000)),
+        ];
+        for (a, b) in edges {
+            check::<i32>(a, b);
+            check::<i64>(a, b);
+        }
+        let limit = crate::setup::lane::FAST_LIMIT;
+        check::<i32>((-limit, -limit), (limit, limit));
+        check::<i32>((limit, -limit), (-limit, limit - 1));
+        check::<i64>((i32::MIN, i32::MIN), (i32::MAX, i32::MAX));
+        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MAX));
+        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MIN + 1));
+    }
+}

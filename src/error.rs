@@ -1,0 +1,58 @@
+//! The crate's error type.
+
+use core::fmt;
+
+/// What can go wrong when setting up buffers and targets.
+///
+/// Drawing itself never fails on its own: bad geometry (degenerate, huge or off-screen
+/// triangles) draws what the fill rule says, possibly nothing. Errors are reported where a
+/// buffer is handed over, so nothing fails later, mid-frame.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use trirast::{Error, Framebuffer};
+///
+/// let mut pixels = [Rgb565::default(); 100];
+/// let err = Framebuffer::new(&mut pixels, 16, 16).unwrap_err();
+/// assert_eq!(err, Error::BufferLength { expected: 256, actual: 100 });
+/// assert_eq!(err.to_string(), "buffer holds 100 elements, its dimensions need 256");
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Error {
+    /// A buffer's length does not match `width * height`.
+    BufferLength {
+        /// The length the dimensions need.
+        expected: usize,
+        /// The length given.
+        actual: usize,
+    },
+    /// A side exceeds `i32::MAX` (pixels need `Point` coordinates) or `width * height`
+    /// overflows `usize`.
+    DimensionsTooLarge {
+        /// Width given.
+        width: u32,
+        /// Height given.
+        height: u32,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::BufferLength { expected, actual } => {
+                write!(
+                    f,
+                    "buffer holds {actual} elements, its dimensions need {expected}"
+                )
+            }
+            Self::DimensionsTooLarge { width, height } => {
+                write!(f, "dimensions {width}x{height} are too large to address")
+            }
+        }
+    }
+}
+
+impl core::error::Error for Error {}

@@ -1,0 +1,5 @@
+//! Geometry: shapes without style.
+
+mod triangle;
+
+pub use triangle::{Orientation, Triangle};

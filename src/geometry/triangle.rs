@@ -1,0 +1,267 @@
+//! The triangle primitive: three integer vertices, no style.
+
+use core::cmp::Ordering;
+
+use embedded_graphics::{
+    geometry::{Dimensions, Point, Size},
+    primitives::{Primitive, Rectangle},
+    transform::Transform,
+};
+
+use crate::{
+    coverage::FillRule,
+    setup::{fits_fast_path, Lane},
+};
+
+/// A triangle with integer vertices, in pixel coordinates (`y` grows downwards).
+///
+/// A plain `Copy` value, styled and drawn the embedded-graphics way: `into_styled` (from
+/// [`Primitive`]) with a style such as [`FlatStyle`](crate::FlatStyle), then
+/// [`Drawable::draw`](embedded_graphics::Drawable::draw). Vertices may be any `i32`, in any
+/// order and winding; see [`FillRule`] for which pixels are drawn.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+/// use trirast::{Framebuffer, FlatStyle, Triangle};
+///
+/// const TRIANGLE: Triangle = Triangle::new(Point::new(2, 1), Point::new(30, 8), Point::new(9, 20));
+///
+/// let mut pixels = [Rgb565::BLACK; 32 * 24];
+/// let mut framebuffer = Framebuffer::new(&mut pixels, 32, 24)?;
+/// TRIANGLE.into_styled(FlatStyle::new(Rgb565::RED)).draw(&mut framebuffer).unwrap();
+/// assert_eq!(framebuffer.pixel(Point::new(10, 10)), Some(Rgb565::RED));
+/// # Ok::<(), trirast::Error>(())
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Triangle {
+    /// The three vertices, in the order given.
+    pub vertices: [Point; 3],
+}
+
+/// The winding of a triangle's vertices as seen on screen (`y` down).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::prelude::*;
+/// use trirast::{Orientation, Triangle};
+///
+/// let t = Triangle::new(Point::new(0, 0), Point::new(10, 0), Point::new(0, 10));
+/// assert_eq!(t.orientation(), Orientation::Clockwise);
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Orientation {
+    /// Clockwise on screen (positive doubled signed area).
+    Clockwise,
+    /// Counter-clockwise on screen (negative doubled signed area).
+    CounterClockwise,
+    /// Zero area: collinear or coincident vertices. Such triangles draw nothing.
+    Degenerate,
+}
+
+impl Triangle {
+    /// Creates a triangle from three vertices.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::Triangle;
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(8, 2), Point::new(3, 9));
+    /// assert_eq!(t.vertices[1], Point::new(8, 2));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(a: Point, b: Point, c: Point) -> Self {
+        Self {
+            vertices: [a, b, c],
+        }
+    }
+
+    /// Twice the signed area, exact for any `i32` vertices: positive for
+    /// [clockwise](Orientation::Clockwise) triangles on screen, zero for degenerate ones.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::Triangle;
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(4, 0), Point::new(0, 3));
+    /// assert_eq!(t.doubled_signed_area(), 12);
+    /// let huge = Triangle::new(Point::new(i32::MIN, i32::MIN), Point::new(i32::MAX, i32::MIN), Point::new(i32::MIN, i32::MAX));
+    /// assert_eq!(huge.doubled_signed_area(), (1i128 << 64) - 2 * (1 << 32) + 1);
+    /// ```
+    #[must_use]
+    pub fn doubled_signed_area(&self) -> i128 {
+        let [a, b, c] = self.vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
+        (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
+    }
+
+    /// The winding of the vertices, computed exactly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::{Orientation, Triangle};
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(0, 10), Point::new(10, 0));
+    /// assert_eq!(t.orientation(), Orientation::CounterClockwise);
+    /// let line = Triangle::new(Point::new(0, 0), Point::new(5, 5), Point::new(10, 10));
+    /// assert_eq!(line.orientation(), Orientation::Degenerate);
+    /// ```
+    #[must_use]
+    pub fn orientation(&self) -> Orientation {
+        let sign = if fits_fast_path(&self.vertices) {
+            cross_sign::<i32>(&self.vertices)
+        } else {
+            cross_sign::<i64>(&self.vertices)
+        };
+        match sign {
+            Ordering::Greater => Orientation::Clockwise,
+            Ordering::Less => Orientation::CounterClockwise,
+            Ordering::Equal => Orientation::Degenerate,
+        }
+    }
+
+    /// True when the vertices are collinear or coincident; such triangles draw nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::Triangle;
+    ///
+    /// assert!(Triangle::new(Point::new(1, 1), Point::new(1, 1), Point::new(5, 2)).is_degenerate());
+    /// ```
+    #[must_use]
+    pub fn is_degenerate(&self) -> bool {
+        self.orientation() == Orientation::Degenerate
+    }
+
+    /// True when `rule` draws `point` as part of this triangle: the exact half-space test that
+    /// the drawing code reproduces row by row.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::{FillRule, Triangle};
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(4, 0), Point::new(0, 4));
+    /// assert!(t.covers(Point::new(0, 0), FillRule::TopLeft)); // top-left corner
+    /// assert!(!t.covers(Point::new(4, 0), FillRule::TopLeft)); // on the right edge
+    /// assert!(t.covers(Point::new(4, 0), FillRule::Inclusive));
+    /// ```
+    #[must_use]
+    pub fn covers(&self, point: Point, rule: FillRule) -> bool {
+        // Orient edges so the interior is positive, then test each edge function exactly.
+        let [mut a, b, mut c] = self.vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
+        let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+        if area == 0 {
+            return false;
+        }
+        if area < 0 {
+            core::mem::swap(&mut a, &mut c);
+        }
+        let p = (i128::from(point.x), i128::from(point.y));
+        [(a, b), (b, c), (c, a)].iter().all(|&(from, to)| {
+            // E(p) = (to - from) x (p - from): positive inside for clockwise-on-screen order.
+            let (ex, ey) = (to.0 - from.0, to.1 - from.1);
+            let value = ex * (p.1 - from.1) - ey * (p.0 - from.0);
+            match rule {
+                FillRule::Inclusive => value >= 0,
+                // dE/dx = -ey, dE/dy = ex: an edge is top-left when the interior lies right of
+                // it (dE/dx > 0) or, if horizontal, below it (dE/dy > 0).
+                FillRule::TopLeft => value > 0 || (value == 0 && (ey < 0 || (ey == 0 && ex > 0))),
+            }
+        })
+    }
+}
+
+fn cross_sign<T: Lane>(vertices: &[Point; 3]) -> Ordering {
+    let [a, b, c] = vertices.map(|p| (T::from_i32(p.x), T::from_i32(p.y)));
+    T::cross_sign(b.0 - a.0, c.1 - a.1, b.1 - a.1, c.0 - a.0)
+}
+
+impl Primitive for Triangle {}
+
+impl Dimensions for Triangle {
+    /// The smallest rectangle holding all three vertices (saturated at the largest `Size`).
+    fn bounding_box(&self) -> Rectangle {
+        let [a, b, c] = self.vertices;
+        let min = a.component_min(b).component_min(c);
+        let max = a.component_max(b).component_max(c);
+        let side =
+            |lo: i32, hi: i32| u32::try_from(i64::from(hi) - i64::from(lo) + 1).unwrap_or(u32::MAX);
+        Rectangle::new(min, Size::new(side(min.x, max.x), side(min.y, max.y)))
+    }
+}
+
+impl Transform for Triangle {
+    /// Moves every vertex by `by`, saturating at the `i32` range.
+    fn translate(&self, by: Point) -> Self {
+        let mut moved = *self;
+        moved.translate_mut(by);
+        moved
+    }
+
+    fn translate_mut(&mut self, by: Point) -> &mut Self {
+        for v in &mut self.vertices {
+            *v = Point::new(v.x.saturating_add(by.x), v.y.saturating_add(by.y));
+        }
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bounding_box_saturates() {
+        let t = Triangle::new(
+            Point::new(i32::MIN, 0),
+            Point::new(i32::MAX, 5),
+            Point::new(0, -5),
+        );
+        let bb = t.bounding_box();
+        assert_eq!(bb.top_left, Point::new(i32::MIN, -5));
+        assert_eq!(bb.size, Size::new(u32::MAX, 11));
+    }
+
+    #[test]
+    fn translate_saturates() {
+        let t = Triangle::new(
+            Point::new(i32::MAX, 0),
+            Point::new(0, i32::MIN),
+            Point::new(1, 1),
+        );
+        let moved = t.translate(Point::new(5, -5));
+        assert_eq!(
+            moved.vertices,
+            [
+                Point::new(i32::MAX, -5),
+                Point::new(5, i32::MIN),
+                Point::new(6, -4)
+            ]
+        );
+    }
+
+    #[test]
+    fn orientation_on_both_paths() {
+        let big = Triangle::new(
+            Point::new(i32::MIN, i32::MIN),
+            Point::new(i32::MAX, i32::MIN),
+            Point::new(i32::MIN, i32::MAX),
+        );
+        assert_eq!(big.orientation(), Orientation::Clockwise);
+        let flipped = Triangle::new(big.vertices[0], big.vertices[2], big.vertices[1]);
+        assert_eq!(flipped.orientation(), Orientation::CounterClockwise);
+        assert_eq!(flipped.doubled_signed_area(), -big.doubled_signed_area());
+    }
+}

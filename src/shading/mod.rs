@@ -1,0 +1,8 @@
+//! Shading, the stage that turns covered spans into colours, and the styles that select it.
+//!
+//! A style pairs with a [`Triangle`](crate::Triangle) through embedded-graphics'
+//! `into_styled`, and the result is [`Drawable`](embedded_graphics::Drawable).
+
+mod flat;
+
+pub use flat::FlatStyle;

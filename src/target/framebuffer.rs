@@ -1,0 +1,378 @@
+//! A `DrawTarget` over caller-provided pixel memory.
+
+use core::{convert::Infallible, fmt, marker::PhantomData};
+
+use embedded_graphics::{
+    draw_target::DrawTarget,
+    geometry::{OriginDimensions, Point, Size},
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+    Pixel,
+};
+
+use super::StoredPixel;
+use crate::Error;
+
+/// A framebuffer over a borrowed slice, one element per pixel, rows top to bottom.
+///
+/// `fill_solid` and `fill_contiguous` clip the area once and then write whole row slices, so a
+/// span costs about what `slice::fill` costs. Nothing is allocated; the slice can live in a
+/// `static`, on the stack, or in memory shared with a DMA engine.
+///
+/// `S` is how each pixel is stored: the colour type itself (the default) or, for the usual
+/// colour types, its raw integer (see [`StoredPixel`]).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+/// use trirast::Framebuffer;
+///
+/// // Typed pixels.
+/// let mut pixels = [Rgb565::BLACK; 320 * 240];
+/// let mut fb = Framebuffer::new(&mut pixels, 320, 240)?;
+/// fb.fill_solid(&Rectangle::new(Point::new(-5, 10), Size::new(20, 2)), Rgb565::RED).unwrap();
+/// assert_eq!(fb.pixel(Point::new(0, 10)), Some(Rgb565::RED));
+///
+/// // Raw `u16` pixels, as an SPI display driver or DMA transfer wants them.
+/// let mut raw = [0u16; 16 * 16];
+/// let mut fb: Framebuffer<Rgb565, u16> = Framebuffer::new(&mut raw, 16, 16)?;
+/// fb.clear(Rgb565::BLUE).unwrap();
+/// assert_eq!(raw[0], 0x001F);
+/// # Ok::<(), trirast::Error>(())
+/// ```
+pub struct Framebuffer<'a, C, S = C> {
+    pixels: &'a mut [S],
+    width: usize,
+    height: usize,
+    color: PhantomData<C>,
+}
+
+impl<'a, C, S> Framebuffer<'a, C, S>
+where
+    C: PixelColor,
+    S: StoredPixel<C>,
+{
+    /// Wraps `pixels` as a `width` x `height` image.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BufferLength`] unless `pixels.len() == width * height`;
+    /// [`Error::DimensionsTooLarge`] if a side exceeds `i32::MAX` or the product overflows.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use trirast::{Error, Framebuffer};
+    ///
+    /// let mut pixels = [Gray8::new(0); 64 * 32];
+    /// assert!(Framebuffer::new(&mut pixels, 64, 32).is_ok());
+    /// assert!(matches!(Framebuffer::new(&mut pixels, 64, 64), Err(Error::BufferLength { .. })));
+    /// ```
+    pub fn new(pixels: &'a mut [S], width: u32, height: u32) -> Result<Self, Error> {
+        let too_large = Error::DimensionsTooLarge { width, height };
+        let side = |v: u32| i32::try_from(v).ok().and_then(|v| usize::try_from(v).ok());
+        let (Some(w), Some(h)) = (side(width), side(height)) else {
+            return Err(too_large);
+        };
+        let expected = w.checked_mul(h).ok_or(too_large)?;
+        if pixels.len() != expected {
+            return Err(Error::BufferLength {
+                expected,
+                actual: pixels.len(),
+            });
+        }
+        Ok(Self {
+            pixels,
+            width: w,
+            height: h,
+            color: PhantomData,
+        })
+    }
+
+    /// The colour at `point`, or `None` outside the image.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+    /// use trirast::Framebuffer;
+    ///
+    /// let mut pixels = [BinaryColor::Off; 8 * 8];
+    /// let fb = Framebuffer::new(&mut pixels, 8, 8)?;
+    /// assert_eq!(fb.pixel(Point::new(7, 7)), Some(BinaryColor::Off));
+    /// assert_eq!(fb.pixel(Point::new(8, 0)), None);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[must_use]
+    pub fn pixel(&self, point: Point) -> Option<C> {
+        self.index(point).map(|i| self.pixels[i].load())
+    }
+
+    /// The stored pixels, row-major.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use trirast::Framebuffer;
+    ///
+    /// let mut raw = [0u16; 4 * 2];
+    /// let mut fb: Framebuffer<Rgb565, u16> = Framebuffer::new(&mut raw, 4, 2)?;
+    /// fb.clear(Rgb565::WHITE).unwrap();
+    /// assert!(fb.pixels().iter().all(|&p| p == 0xFFFF));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[must_use]
+    pub fn pixels(&self) -> &[S] {
+        self.pixels
+    }
+
+    /// The stored pixels, row-major, writable.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::Framebuffer;
+    ///
+    /// let mut pixels = [Gray8::BLACK; 3 * 3];
+    /// let mut fb = Framebuffer::new(&mut pixels, 3, 3)?;
+    /// fb.pixels_mut()[4] = Gray8::WHITE;
+    /// assert_eq!(fb.pixel(Point::new(1, 1)), Some(Gray8::WHITE));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[must_use]
+    pub fn pixels_mut(&mut self) -> &mut [S] {
+        self.pixels
+    }
+
+    /// Index of `point` in the slice, if inside.
+    #[inline]
+    fn index(&self, point: Point) -> Option<usize> {
+        let x = usize::try_from(point.x).ok().filter(|&x| x < self.width)?;
+        let y = usize::try_from(point.y).ok().filter(|&y| y < self.height)?;
+        Some(y * self.width + x)
+    }
+
+    /// The part of `area` inside the image, as column and row ranges.
+    #[inline(always)]
+    fn clip(&self, area: &Rectangle) -> Option<Window> {
+        let range = |start: i32, len: u32, limit: usize| {
+            let start = i64::from(start);
+            let end = start + i64::from(len);
+            // `limit` is at most i32::MAX, so these conversions are lossless.
+            let lo = start.clamp(0, limit as i64) as usize;
+            let hi = end.clamp(0, limit as i64) as usize;
+            (lo < hi).then_some((lo, hi))
+        };
+        let (x0, x1) = range(area.top_left.x, area.size.width, self.width)?;
+        let (y0, y1) = range(area.top_left.y, area.size.height, self.height)?;
+        Some(Window { x0, x1, y0, y1 })
+    }
+}
+
+/// A non-empty clipped area: columns `x0..x1`, rows `y0..y1`.
+#[derive(Copy, Clone)]
+struct Window {
+    x0: usize,
+    x1: usize,
+    y0: usize,
+    y1: usize,
+}
+
+impl<C, S> DrawTarget for Framebuffer<'_, C, S>
+where
+    C: PixelColor,
+    S: StoredPixel<C>,
+{
+    type Color = C;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<C>>,
+    {
+        for Pixel(point, color) in pixels {
+            if let Some(i) = self.index(point) {
+                self.pixels[i] = S::store(color);
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        let Some(window) = self.clip(area) else {
+            return Ok(());
+        };
+        let mut colors = colors.into_iter();
+        let width = self.width;
+        // Colours of the area's pixels left of, right of and above the window are skipped.
+        let left = (i64::from(window.x0 as i32) - i64::from(area.top_left.x)) as u64;
+        let right = u64::from(area.size.width) - left - (window.x1 - window.x0) as u64;
+        let above = (i64::from(window.y0 as i32) - i64::from(area.top_left.y)) as u64;
+        skip(&mut colors, above * u64::from(area.size.width));
+        for y in window.y0..window.y1 {
+            skip(&mut colors, left);
+            let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
+            let mut written = 0;
+            for (dst, color) in row.iter_mut().zip(colors.by_ref()) {
+                *dst = S::store(color);
+                written += 1;
+            }
+            if written < row.len() {
+                break;
+            }
+            skip(&mut colors, right);
+        }
+        Ok(())
+    }
+
+    #[inline]
+    fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
+        let Some(window) = self.clip(area) else {
+            return Ok(());
+        };
+        let value = S::store(color);
+        let width = self.width;
+        for y in window.y0..window.y1 {
+            self.pixels[y * width + window.x0..y * width + window.x1].fill(value);
+        }
+        Ok(())
+    }
+
+    fn clear(&mut self, color: C) -> Result<(), Self::Error> {
+        self.pixels.fill(S::store(color));
+        Ok(())
+    }
+}
+
+/// Drops `count` items; stops early if the iterator ends.
+#[inline]
+fn skip<I: Iterator>(iter: &mut I, count: u64) {
+    if count > 0 {
+        // `nth(n)` consumes n + 1 items.
+        let mut remaining = count;
+        while remaining > 0 {
+            let chunk = usize::try_from(remaining).unwrap_or(usize::MAX);
+            if iter.nth(chunk - 1).is_none() {
+                return;
+            }
+            remaining -= chunk as u64;
+        }
+    }
+}
+
+impl<C, S> OriginDimensions for Framebuffer<'_, C, S> {
+    fn size(&self) -> Size {
+        // Both sides were checked to fit i32 at construction.
+        Size::new(self.width as u32, self.height as u32)
+    }
+}
+
+impl<C, S> fmt::Debug for Framebuffer<'_, C, S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Framebuffer")
+            .field("width", &self.width)
+            .field("height", &self.height)
+            .finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use embedded_graphics::pixelcolor::Gray8;
+    use embedded_graphics::prelude::*;
+
+    fn gray(v: u8) -> Gray8 {
+        Gray8::new(v)
+    }
+
+    #[test]
+    fn rejects_wrong_lengths_and_huge_sizes() {
+        let mut px = [gray(0); 12];
+        assert_eq!(
+            Framebuffer::new(&mut px, 4, 4).unwrap_err(),
+            Error::BufferLength {
+                expected: 16,
+                actual: 12
+            }
+        );
+        assert_eq!(
+            Framebuffer::new(&mut px, u32::MAX, 1).unwrap_err(),
+            Error::DimensionsTooLarge {
+                width: u32::MAX,
+                height: 1
+            }
+        );
+        assert!(Framebuffer::new(&mut px, 4, 3).is_ok());
+        assert!(Framebuffer::<Gray8>::new(&mut [], 0, 7).is_ok());
+    }
+
+    #[test]
+    fn fill_solid_clips() {
+        let mut px = [gray(0); 5 * 4];
+        let mut fb = Framebuffer::new(&mut px, 5, 4).unwrap();
+        fb.fill_solid(
+            &Rectangle::new(Point::new(-2, -1), Size::new(4, 3)),
+            gray(9),
+        )
+        .unwrap();
+        fb.fill_solid(
+            &Rectangle::new(Point::new(4, 3), Size::new(u32::MAX, u32::MAX)),
+            gray(7),
+        )
+        .unwrap();
+        // From i32::MIN across the whole row 0.
+        fb.fill_solid(
+            &Rectangle::new(Point::new(i32::MIN, 0), Size::new(u32::MAX, 1)),
+            gray(3),
+        )
+        .unwrap();
+        let v: [u8; 20] = px.map(|c| c.luma());
+        assert_eq!(
+            v,
+            [3, 3, 3, 3, 3, 9, 9, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 7]
+        );
+    }
+
+    #[test]
+    fn fill_contiguous_clips_in_row_major_order() {
+        let mut px = [gray(0); 4 * 3];
+        let mut fb = Framebuffer::new(&mut px, 4, 3).unwrap();
+        // A 3x3 area hanging off the top-left corner, numbered 1..=9 row by row.
+        let area = Rectangle::new(Point::new(-1, -1), Size::new(3, 3));
+        fb.fill_contiguous(&area, (1..=9).map(gray)).unwrap();
+        let v: [u8; 12] = px.map(|c| c.luma());
+        assert_eq!(v, [5, 6, 0, 0, 8, 9, 0, 0, 0, 0, 0, 0]);
+    }
+
+    #[test]
+    fn fill_contiguous_stops_when_colors_run_out() {
+        let mut px = [gray(0); 3 * 2];
+        let mut fb = Framebuffer::new(&mut px, 3, 2).unwrap();
+        let area = Rectangle::new(Point::new(0, 0), Size::new(3, 2));
+        fb.fill_contiguous(&area, (1..=4).map(gray)).unwrap();
+        let v: [u8; 6] = px.map(|c| c.luma());
+        assert_eq!(v, [1, 2, 3, 4, 0, 0]);
+    }
+
+    #[test]
+    fn draw_iter_ignores_outside_pixels() {
+        let mut px = [gray(0); 2 * 2];
+        let mut fb = Framebuffer::new(&mut px, 2, 2).unwrap();
+        let pixels = [
+            Pixel(Point::new(1, 1), gray(3)),
+            Pixel(Point::new(2, 0), gray(4)),
+            Pixel(Point::new(-1, 0), gray(5)),
+        ];
+        fb.draw_iter(pixels).unwrap();
+        let v: [u8; 4] = px.map(|c| c.luma());
+        assert_eq!(v, [0, 0, 0, 3]);
+    }
+}
