@@ -1,4 +1,10 @@
-//! Bresenham-style edge stepping: one division per edge, then additions only.
+//! Bresenham-style edge stepping: at most one division per edge, then additions only.
+//!
+//! An edge from `(xa, ya)` to `(xb, yb)` (`ya < yb`) crosses row `ya + n` at
+//! `X = xa + dx * n / dy`. A stepper holds the pixel bound `x = xa + floor((dx * n + k) / dy)`
+//! (`k = dy - 1` for [`Rounding::Ceil`], `k = dy` for [`Rounding::FloorPlusOne`]) and the
+//! remainder of that division as an error term; each row adds the quotient and remainder of
+//! `dx / dy`, computed once.
 
 use crate::setup::Lane;
 
@@ -12,84 +18,77 @@ pub(crate) enum Rounding {
     FloorPlusOne,
 }
 
-/// Walks an edge from its upper to its lower vertex one row at a time.
-///
-/// At row `ya + n` the edge crosses `X = xa + dx * n / dy`; the stepper holds the bound
-/// `x = xa + floor((dx * n + k) / dy)` (`k = dy - 1` for [`Rounding::Ceil`], `k = dy` for
-/// [`Rounding::FloorPlusOne`]) and the remainder of that division as an error term, kept in
-/// `-dy..0` so that it never overflows the lane. Each row adds the quotient and remainder of
-/// `dx / dy`, computed once.
-#[derive(Copy, Clone, Debug)]
-pub(crate) struct EdgeStepper<T> {
-    /// The current bound.
-    pub(crate) x: T,
-    /// Remainder minus `dy`, in `-dy..0`.
-    error: T,
-    /// `floor(dx / dy)`.
-    step: T,
-    /// `dx mod dy`, in `0..dy`.
-    remainder: T,
-    dy: T,
-}
+/// An edge being walked one row at a time; each lane has its own representation.
+pub(crate) trait EdgeWalk<T>: Copy {
+    /// Starts the edge from `upper` to `lower` (`upper.1 < lower.1`) at `row`, which must lie
+    /// in `upper.1..=lower.1`. When `will_advance` is false the edge is only read at `row`,
+    /// and its division may be skipped.
+    fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T, will_advance: bool) -> Self;
 
-impl<T: Lane> EdgeStepper<T> {
-    /// Starts the edge from `(xa, ya)` to `(xb, yb)` (`ya < yb`) at row `row`, which must lie in
-    /// `ya..=yb`.
-    #[inline(always)]
-    pub(crate) fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T) -> Self {
-        let (xa, ya) = upper;
-        let dy = lower.1 - ya;
-        let dx = lower.0 - xa;
-        debug_assert!(dy > T::ZERO && row >= ya && row <= lower.1);
-        let (step, remainder) = dx.div_rem_floor(dy);
-        let rows_in = row - ya;
-        let (x, error) = if rows_in == T::ZERO {
-            // At the upper vertex the crossing is the integer `xa`: no division needed.
-            match rounding {
-                Rounding::Ceil => (xa, T::ZERO - T::ONE),
-                Rounding::FloorPlusOne => (xa + T::ONE, T::ZERO - dy),
-            }
-        } else {
-            Self::jump(xa, dy, step, remainder, rounding, rows_in)
-        };
-        Self {
-            x,
-            error,
-            step,
-            remainder,
-            dy,
-        }
-    }
-
-    /// The bound and error term `rows_in` rows below the upper vertex (`0 < rows_in <= dy`),
-    /// for edges that start above the clip window.
-    ///
-    /// `dx * n + k = step * dy * n + (remainder * n + k)`, and `remainder * n + k <= dy^2`
-    /// fits `u64` for any `i32` vertices, so no 128-bit arithmetic is needed.
-    #[inline(never)]
-    fn jump(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_in: T) -> (T, T) {
-        let (dy, n) = (dy.to_i64(), rows_in.to_i64());
-        let k = match rounding {
-            Rounding::Ceil => dy - 1,
-            Rounding::FloorPlusOne => dy,
-        };
-        let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
-        let (quotient, rem) = div_rem_u64(numerator, dy as u64);
-        // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
-        let x = xa.to_i64() + step.to_i64() * n + quotient as i64;
-        (T::from_i64(x), T::from_i64(rem as i64 - dy))
-    }
+    /// The bound on the current row.
+    fn x(&self) -> T;
 
     /// Moves to the next row.
-    #[inline(always)]
-    pub(crate) fn advance(&mut self) {
-        self.x += self.step;
-        self.error += self.remainder;
-        if self.error >= T::ZERO {
-            self.x += T::ONE;
-            self.error -= self.dy;
+    fn advance(&mut self);
+}
+
+/// A lane together with its edge representation.
+pub(crate) trait WalkLane: Lane {
+    type Edge: EdgeWalk<Self>;
+}
+
+impl WalkLane for i32 {
+    type Edge = PackedStepper;
+}
+
+impl WalkLane for i64 {
+    type Edge = EdgeStepper<i64>;
+}
+
+/// Quotient and remainder of `dx / dy`, the per-row increments.
+#[inline(always)]
+fn increments<T: Lane>(dx: T, dy: T) -> (T, T) {
+    dx.div_rem_floor(dy)
+}
+
+/// The bound and error term (`remainder - dy`, in `-dy..0`) at row `ya + rows_in`, for
+/// `0 <= rows_in <= dy`.
+#[inline(always)]
+fn bound_at<T: Lane>(
+    xa: T,
+    dy: T,
+    (step, remainder): (T, T),
+    rounding: Rounding,
+    rows_in: T,
+) -> (T, T) {
+    if rows_in == T::ZERO {
+        // At the upper vertex the crossing is the integer `xa`: no division needed.
+        match rounding {
+            Rounding::Ceil => (xa, T::ZERO - T::ONE),
+            Rounding::FloorPlusOne => (xa + T::ONE, T::ZERO - dy),
         }
+    } else {
+        jump(xa, dy, step, remainder, rounding, rows_in)
     }
+}
+
+/// The bound and error term `rows_in` rows below the upper vertex (`0 < rows_in <= dy`), for
+/// edges that start above the clip window.
+///
+/// `dx * n + k = step * dy * n + (remainder * n + k)`, and `remainder * n + k <= dy^2` fits
+/// `u64` for any `i32` vertices, so no 128-bit arithmetic is needed.
+#[inline(never)]
+fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_in: T) -> (T, T) {
+    let (dy, n) = (dy.to_i64(), rows_in.to_i64());
+    let k = match rounding {
+        Rounding::Ceil => dy - 1,
+        Rounding::FloorPlusOne => dy,
+    };
+    let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
+    let (quotient, rem) = div_rem_u64(numerator, dy as u64);
+    // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
+    let x = xa.to_i64() + step.to_i64() * n + quotient as i64;
+    (T::from_i64(x), T::from_i64(rem as i64 - dy))
 }
 
 /// `u64` division that stays in 32 bits when it can: on Cortex-M0 a 64-bit division is a long
@@ -100,6 +99,124 @@ fn div_rem_u64(numerator: u64, divisor: u64) -> (u64, u64) {
         (Ok(n), Ok(d)) => (u64::from(n / d), u64::from(n % d)),
         _ => (numerator / divisor, numerator % divisor),
     }
+}
+
+/// The plain stepper: bound, error term and increments in separate words (the 64-bit lane).
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct EdgeStepper<T> {
+    x: T,
+    /// Remainder minus `dy`, in `-dy..0`.
+    error: T,
+    /// `floor(dx / dy)`.
+    step: T,
+    /// `dx mod dy`, in `0..dy`.
+    remainder: T,
+    dy: T,
+}
+
+impl<T: Lane> EdgeWalk<T> for EdgeStepper<T> {
+    #[inline(always)]
+    fn start(
+        upper: (T, T),
+        lower: (T, T),
+        rounding: Rounding,
+        row: T,
+        _will_advance: bool,
+    ) -> Self {
+        let (xa, ya) = upper;
+        let dy = lower.1 - ya;
+        debug_assert!(dy > T::ZERO && row >= ya && row <= lower.1);
+        let (step, remainder) = increments(lower.0 - xa, dy);
+        let (x, error) = bound_at(xa, dy, (step, remainder), rounding, row - ya);
+        Self {
+            x,
+            error,
+            step,
+            remainder,
+            dy,
+        }
+    }
+
+    #[inline(always)]
+    fn x(&self) -> T {
+        self.x
+    }
+
+    #[inline(always)]
+    fn advance(&mut self) {
+        self.x += self.step;
+        self.error += self.remainder;
+        if self.error >= T::ZERO {
+            self.x += T::ONE;
+            self.error -= self.dy;
+        }
+    }
+}
+
+/// The 32-bit lane's stepper: bound and error term packed in one `u64`, so that one addition
+/// steps both and carries the error overflow into the bound.
+///
+/// The high half holds `x`; the low half holds the error term biased by `2^32` (the error is
+/// in `-dy..0`, so the low half is in `2^32 - dy..2^32`). Adding `(step << 32) | remainder`
+/// overflows the low half exactly when the error reaches zero, which adds the Bresenham carry to
+/// `x`. The low half is then below `dy < 2^31` (bit 31 clear), and adding `2^32 - dy` to it
+/// subtracts `dy` from the error and restores the bias without touching `x`.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct PackedStepper {
+    packed: u64,
+    increment: u64,
+    rebias: u64,
+}
+
+impl EdgeWalk<i32> for PackedStepper {
+    #[inline(always)]
+    fn start(
+        upper: (i32, i32),
+        lower: (i32, i32),
+        rounding: Rounding,
+        row: i32,
+        will_advance: bool,
+    ) -> Self {
+        let (xa, ya) = upper;
+        let dy = lower.1 - ya;
+        debug_assert!(dy > 0 && row >= ya && row <= lower.1);
+        let rows_in = row - ya;
+        // The division is skipped for edges read on one row only, e.g. a triangle's top half
+        // when it is one row high.
+        let (step, remainder) = if will_advance || rows_in != 0 {
+            increments(lower.0 - xa, dy)
+        } else {
+            (0, 0)
+        };
+        let (x, error) = bound_at(xa, dy, (step, remainder), rounding, rows_in);
+        Self {
+            packed: pack(x, error),
+            increment: pack(step, remainder),
+            rebias: (1u64 << 32) - dy as u64,
+        }
+    }
+
+    #[inline(always)]
+    fn x(&self) -> i32 {
+        (self.packed >> 32) as i32
+    }
+
+    #[inline(always)]
+    fn advance(&mut self) {
+        let stepped = self.packed.wrapping_add(self.increment);
+        // Bit 31 clear: the error overflowed (and `x` took the carry).
+        self.packed = if (stepped as u32 as i32) < 0 {
+            stepped
+        } else {
+            stepped.wrapping_add(self.rebias)
+        };
+    }
+}
+
+/// `high` in the upper 32 bits, `low` in the lower (two's complement bits of each).
+#[inline(always)]
+fn pack(high: i32, low: i32) -> u64 {
+    (u64::from(high as u32) << 32) | u64::from(low as u32)
 }
 
 #[cfg(test)]
@@ -117,15 +234,15 @@ mod tests {
         i64::try_from(bound).unwrap() + xa
     }
 
-    fn check<T: Lane>(a: (i32, i32), b: (i32, i32)) {
+    fn check<T: Lane, E: EdgeWalk<T>>(a: (i32, i32), b: (i32, i32)) {
         let lane = |p: (i32, i32)| (T::from_i32(p.0), T::from_i32(p.1));
         let rows = i64::from(b.1) - i64::from(a.1);
         for rounding in [Rounding::Ceil, Rounding::FloorPlusOne] {
-            // Start at every row of a short edge, and at a few rows of a long one.
-            let starts: [i64; 4] = [0, 1, rows / 2, rows];
+            // Start at the first rows, in the middle and at the end of the edge.
+            let starts: [i64; 4] = [0, 1.min(rows), rows / 2, rows];
             for start in starts {
                 let row = T::from_i64(i64::from(a.1) + start);
-                let mut edge = EdgeStepper::start(lane(a), lane(b), rounding, row);
+                let mut edge = E::start(lane(a), lane(b), rounding, row, true);
                 let mut n = start;
                 loop {
                     let want = exact(
@@ -136,13 +253,24 @@ mod tests {
                         rounding,
                         i64::from(a.1) + n,
                     );
-                    assert_eq!(edge.x.to_i64(), want, "{a:?}->{b:?} {rounding:?} row {n}");
+                    assert_eq!(edge.x().to_i64(), want, "{a:?}->{b:?} {rounding:?} row {n}");
                     if n == rows || n > start + 50 {
                         break;
                     }
                     edge.advance();
                     n += 1;
                 }
+                // Read-only start: same bound, division skipped.
+                let read_only = E::start(lane(a), lane(b), rounding, row, false);
+                let want = exact(
+                    a.0.into(),
+                    a.1.into(),
+                    b.0.into(),
+                    b.1.into(),
+                    rounding,
+                    i64::from(a.1) + start,
+                );
+                assert_eq!(read_only.x().to_i64(), want);
             }
         }
     }
@@ -156,16 +284,24 @@ mod tests {
             ((3, 0), (-40, 1)),
             ((-100, -50), (31, 77)),
             ((0, 0), (1, 1000)),
+            ((0, 0), (-1, 1000)),
         ];
         for (a, b) in edges {
-            check::<i32>(a, b);
-            check::<i64>(a, b);
+            check::<i32, PackedStepper>(a, b);
+            check::<i32, EdgeStepper<i32>>(a, b);
+            check::<i64, EdgeStepper<i64>>(a, b);
         }
         let limit = crate::setup::lane::FAST_LIMIT;
-        check::<i32>((-limit, -limit), (limit, limit));
-        check::<i32>((limit, -limit), (-limit, limit - 1));
-        check::<i64>((i32::MIN, i32::MIN), (i32::MAX, i32::MAX));
-        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MAX));
-        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MIN + 1));
+        for (a, b) in [
+            ((-limit, -limit), (limit, limit)),
+            ((limit, -limit), (-limit, limit - 1)),
+            ((limit, -limit), (-limit, -limit + 1)),
+        ] {
+            check::<i32, PackedStepper>(a, b);
+            check::<i32, EdgeStepper<i32>>(a, b);
+        }
+        check::<i64, EdgeStepper<i64>>((i32::MIN, i32::MIN), (i32::MAX, i32::MAX));
+        check::<i64, EdgeStepper<i64>>((i32::MAX, i32::MIN), (i32::MIN, i32::MAX));
+        check::<i64, EdgeStepper<i64>>((i32::MAX, i32::MIN), (i32::MIN, i32::MIN + 1));
     }
 }

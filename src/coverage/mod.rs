@@ -17,9 +17,9 @@ pub use fill_rule::FillRule;
 
 use crate::{
     geometry::Triangle,
-    setup::{fits_fast_path, Clip, Lane, Prepared},
+    setup::{fits_fast_path, sort_top_to_bottom, Clip, Prepared},
 };
-use edge::{EdgeStepper, Rounding};
+use edge::{EdgeWalk, Rounding, WalkLane};
 
 /// A run of covered pixels on one row: `len` pixels starting at `(x, y)`.
 ///
@@ -61,14 +61,72 @@ impl Span {
     }
 }
 
+/// Receives spans from [`walk`].
+///
+/// Any `FnMut(Span) -> Result<(), E>` closure is a sink. Implement the trait on a type of your
+/// own when the per-span work must be inlined into the edge walk whatever the optimiser thinks
+/// (closures cannot be marked `#[inline(always)]`); the crate's styles do.
+///
+/// # Examples
+///
+/// ```
+/// use core::convert::Infallible;
+/// use embedded_graphics::{prelude::*, primitives::Rectangle};
+/// use trirast::{coverage::{walk, Span, SpanSink}, FillRule, Triangle};
+///
+/// /// Counts covered pixels.
+/// struct Area(u64);
+///
+/// impl SpanSink for Area {
+///     type Error = Infallible;
+///
+///     #[inline(always)]
+///     fn span(&mut self, span: Span) -> Result<(), Infallible> {
+///         self.0 += u64::from(span.len);
+///         Ok(())
+///     }
+/// }
+///
+/// let triangle = Triangle::new(Point::new(0, 0), Point::new(10, 0), Point::new(0, 10));
+/// let mut area = Area(0);
+/// walk(&triangle, FillRule::TopLeft, &Rectangle::new(Point::zero(), Size::new(64, 64)), &mut area)?;
+/// assert_eq!(area.0, 55);
+/// # Ok::<(), Infallible>(())
+/// ```
+pub trait SpanSink {
+    /// What the sink can fail with; the first error stops the walk.
+    type Error;
+
+    /// Takes one span.
+    ///
+    /// # Errors
+    ///
+    /// Whatever the sink reports; [`for_each_span`] stops and returns it.
+    fn span(&mut self, span: Span) -> Result<(), Self::Error>;
+}
+
+impl<E, F: FnMut(Span) -> Result<(), E>> SpanSink for F {
+    type Error = E;
+
+    #[inline(always)]
+    fn span(&mut self, span: Span) -> Result<(), E> {
+        self(span)
+    }
+}
+
 /// Calls `emit` with every span of `triangle` inside `clip`, top to bottom, one per row.
 ///
 /// This is the coverage the crate's drawing styles use; call it directly to feed spans to a
 /// custom shader or a target of your own. Degenerate triangles produce nothing. The first error
-/// returned by `emit` stops the walk and is returned.
+/// returned by `emit` stops the walk and is returned. ([`walk`] does the same for any
+/// [`SpanSink`].)
 ///
 /// Vertices may be any `i32`. When all coordinates lie within ±[`FAST_LIMIT`] the walk runs in
 /// 32-bit arithmetic; beyond, it runs the same algorithm in 64-bit arithmetic, equally exact.
+///
+/// # Errors
+///
+/// The first error `emit` returns.
 ///
 /// # Examples
 ///
@@ -99,43 +157,117 @@ pub fn for_each_span<E, F>(
 where
     F: FnMut(Span) -> Result<(), E>,
 {
-    if fits_fast_path(&triangle.vertices) {
-        walk::<i32, E, F>(triangle.vertices, rule, clip, &mut emit)
+    walk(triangle, rule, clip, &mut emit)
+}
+
+/// Feeds every span of `triangle` inside `clip` to `sink`, top to bottom, one per row: the
+/// same walk as [`for_each_span`], for sinks that are not closures.
+///
+/// # Errors
+///
+/// The first error the sink returns.
+///
+/// # Examples
+///
+/// ```
+/// use core::convert::Infallible;
+/// use embedded_graphics::{prelude::*, primitives::Rectangle};
+/// use trirast::{coverage::{walk, Span, SpanSink}, FillRule, Triangle};
+///
+/// struct Rows(Vec<i32>);
+///
+/// impl SpanSink for Rows {
+///     type Error = Infallible;
+///
+///     fn span(&mut self, span: Span) -> Result<(), Infallible> {
+///         self.0.push(span.y);
+///         Ok(())
+///     }
+/// }
+///
+/// let triangle = Triangle::new(Point::new(0, 0), Point::new(6, 3), Point::new(0, 6));
+/// let mut rows = Rows(Vec::new());
+/// walk(&triangle, FillRule::TopLeft, &Rectangle::new(Point::zero(), Size::new(8, 8)), &mut rows)?;
+/// assert_eq!(rows.0, [1, 2, 3, 4, 5]);
+/// # Ok::<(), Infallible>(())
+/// ```
+#[inline]
+pub fn walk<K: SpanSink + ?Sized>(
+    triangle: &Triangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let sorted = sort_top_to_bottom(triangle.vertices);
+    if fits_fast_path(&sorted) {
+        walk_lane::<i32, K>(sorted, rule, clip, sink)
     } else {
-        walk_wide(triangle.vertices, rule, clip, &mut emit)
+        // Scalars, not references: the cold call should not force the triangle and window
+        // into memory on the fast path.
+        let [a, b, c] = sorted;
+        let (tl, size) = (clip.top_left, clip.size);
+        walk_wide(
+            [a.x, a.y, b.x, b.y, c.x, c.y],
+            rule,
+            [tl.x, tl.y, size.width as i32, size.height as i32],
+            sink,
+        )
     }
 }
 
 /// The wide path, kept out of line: rare, and it should not bloat the fast path's caller.
 #[inline(never)]
-fn walk_wide<E, F>(
-    vertices: [Point; 3],
+#[cold]
+fn walk_wide<K: SpanSink + ?Sized>(
+    v: [i32; 6],
     rule: FillRule,
-    clip: &Rectangle,
-    emit: &mut F,
-) -> Result<(), E>
-where
-    F: FnMut(Span) -> Result<(), E>,
-{
-    walk::<i64, E, F>(vertices, rule, clip, emit)
+    clip: [i32; 4],
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let sorted = [
+        Point::new(v[0], v[1]),
+        Point::new(v[2], v[3]),
+        Point::new(v[4], v[5]),
+    ];
+    let clip = Rectangle::new(
+        Point::new(clip[0], clip[1]),
+        Size::new(clip[2] as u32, clip[3] as u32),
+    );
+    walk_lane::<i64, K>(sorted, rule, &clip, sink)
 }
 
+/// Walks a triangle whose vertices are sorted top to bottom.
 #[inline(always)]
-fn walk<T: Lane, E, F>(
-    vertices: [Point; 3],
+fn walk_lane<T: WalkLane, K: SpanSink + ?Sized>(
+    sorted: [Point; 3],
     rule: FillRule,
     clip: &Rectangle,
-    emit: &mut F,
-) -> Result<(), E>
-where
-    F: FnMut(Span) -> Result<(), E>,
-{
+    sink: &mut K,
+) -> Result<(), K::Error> {
     let Some(clip) = Clip::<T>::from_rectangle(clip) else {
         return Ok(());
     };
-    let Some(triangle) = Prepared::<T>::new(vertices) else {
+    let Some(triangle) = Prepared::<T>::from_sorted(sorted) else {
         return Ok(());
     };
+    let (x_min, x_max) = triangle.x_range();
+    // Bounds lie within x_min..=x_max + 1: inside the window, rows need no clipping in x.
+    let inside = x_min >= clip.x0 && x_max < clip.x1;
+    match (inside, triangle.long_edge_left) {
+        (true, true) => walk_rows::<T, K, false, true>(&triangle, rule, &clip, sink),
+        (true, false) => walk_rows::<T, K, false, false>(&triangle, rule, &clip, sink),
+        (false, true) => walk_rows::<T, K, true, true>(&triangle, rule, &clip, sink),
+        (false, false) => walk_rows::<T, K, true, false>(&triangle, rule, &clip, sink),
+    }
+}
+
+#[inline(always)]
+fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_LEFT: bool>(
+    triangle: &Prepared<T>,
+    rule: FillRule,
+    clip: &Clip<T>,
+    sink: &mut K,
+) -> Result<(), K::Error> {
     let [top, middle, bottom] = triangle.sorted;
     // Top-left: rows top..bottom (the bottom vertex row is an apex or a bottom edge, both out).
     // Inclusive: rows top..=bottom.
@@ -148,65 +280,87 @@ where
     if first_row >= end_row {
         return Ok(());
     }
-    let left = triangle.long_edge_left;
-    let (long_rounding, short_rounding) = if left {
+    let (long_rounding, short_rounding) = if LONG_LEFT {
         (Rounding::Ceil, right_rounding)
     } else {
         (right_rounding, Rounding::Ceil)
     };
-    let row_span = |row: T, long_x: T, short_x: T, emit: &mut F| {
-        let (l, r) = if left {
-            (long_x, short_x)
-        } else {
-            (short_x, long_x)
-        };
-        let (l, r) = (l.max(clip.x0), r.min(clip.x1));
-        if l < r {
-            // Clipped values lie in the window, whose coordinates and width fit.
-            emit(Span {
-                x: l.to_i64() as i32,
-                y: row.to_i64() as i32,
-                len: (r - l).to_i64() as u32,
-            })
-        } else {
-            Ok(())
-        }
-    };
 
-    let mut long = EdgeStepper::start(top, bottom, long_rounding, first_row);
-    // The upper short edge serves rows above the middle vertex. With a flat bottom (inclusive
-    // rule only reaches that row) it also serves the middle row, where it ends exactly.
-    let upper_end = if middle.1 < bottom.1 {
+    let mut long = T::Edge::start(
+        top,
+        bottom,
+        long_rounding,
+        first_row,
+        end_row - first_row > T::ONE,
+    );
+    // The upper short edge serves rows above the middle vertex, the lower one the rest. With a
+    // flat bottom (which only the inclusive rule reaches) the upper edge also serves the middle
+    // row, where it ends exactly; the lower edge is then never started.
+    let switch_row = if middle.1 < bottom.1 {
         middle.1
     } else {
         end_row
-    }
-    .min(end_row);
+    };
     let mut row = first_row;
-    if row < upper_end {
-        let mut short = EdgeStepper::start(top, middle, short_rounding, row);
-        loop {
-            row_span(row, long.x, short.x, emit)?;
-            row += T::ONE;
-            if row >= end_row {
-                return Ok(());
-            }
-            long.advance();
-            if row >= upper_end {
-                break;
-            }
-            short.advance();
-        }
-    }
-    // Rows from the middle vertex down: the lower short edge (row >= middle.1 here).
-    let mut short = EdgeStepper::start(middle, bottom, short_rounding, row);
-    loop {
-        row_span(row, long.x, short.x, emit)?;
-        row += T::ONE;
-        if row >= end_row {
+    if row < switch_row {
+        let rows = switch_row.min(end_row) - row;
+        let short = T::Edge::start(top, middle, short_rounding, row, rows > T::ONE);
+        rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)?;
+        row += rows;
+        if row == end_row {
             return Ok(());
         }
         long.advance();
-        short.advance();
     }
+    let rows = end_row - row;
+    let short = T::Edge::start(middle, bottom, short_rounding, row, rows > T::ONE);
+    rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)
+}
+
+/// Emits `rows` rows (at least one) from `row` down between the long edge and one short edge,
+/// leaving the long edge on the last of them.
+///
+/// Specialised by which side the long edge is on, so each row costs two edge steps, a
+/// comparison and the sink.
+#[inline(always)]
+fn rows_between<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_LEFT: bool>(
+    long: &mut T::Edge,
+    mut short: T::Edge,
+    mut row: T,
+    rows: T,
+    clip: &Clip<T>,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let mut edge = *long;
+    let last = row + rows - T::ONE;
+    let result = loop {
+        let (mut l, mut r) = if LONG_LEFT {
+            (edge.x(), short.x())
+        } else {
+            (short.x(), edge.x())
+        };
+        if CLIP_X {
+            l = l.max(clip.x0);
+            r = r.min(clip.x1);
+        }
+        if l < r {
+            // Values inside the window, whose coordinates and width fit.
+            let span = Span {
+                x: l.to_i64() as i32,
+                y: row.to_i64() as i32,
+                len: T::len_u32(r, l),
+            };
+            if let Err(e) = sink.span(span) {
+                break Err(e);
+            }
+        }
+        if row == last {
+            break Ok(());
+        }
+        row += T::ONE;
+        edge.advance();
+        short.advance();
+    };
+    *long = edge;
+    result
 }

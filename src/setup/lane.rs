@@ -7,12 +7,16 @@
 use core::cmp::Ordering;
 use core::ops::{Add, AddAssign, Sub, SubAssign};
 
-/// Largest vertex coordinate magnitude for which the 32-bit fast path is exact.
+/// Vertex coordinates within ±`FAST_LIMIT` (2^30 - 1) take the 32-bit fast path.
 ///
-/// With every coordinate in `-FAST_LIMIT..=FAST_LIMIT`, edge deltas stay below `2^31`, edge
-/// positions stay within `-FAST_LIMIT..=FAST_LIMIT + 1`, stepping error terms stay within
-/// `-2^31..2^31` and doubled areas within `i64`.
+/// The fast path runs for every coordinate in `-2^30..2^30`: edge deltas then stay below
+/// `2^31`, edge positions within `-2^30..=2^30`, stepping error terms within `-2^31..2^31` and
+/// doubled areas within `i64`. Beyond, the same walk runs in 64-bit arithmetic.
 pub const FAST_LIMIT: i32 = (1 << 30) - 1;
+
+/// The fast range is `-FAST_BIAS..FAST_BIAS`: biased by `FAST_BIAS`, a coordinate in it has
+/// bit 31 clear, so six coordinates are checked with one OR.
+const FAST_BIAS: i32 = 1 << 30;
 
 /// Integer operations the stepping code needs, for `i32` (fast) and `i64` (wide).
 pub(crate) trait Lane:
@@ -33,13 +37,32 @@ pub(crate) trait Lane:
     fn div_rem_floor(self, divisor: Self) -> (Self, Self);
     /// Exact sign of `a * b - c * d`.
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering;
+    /// `(a - b)` as a `u32` length, for `b <= a` with `a - b < 2^32` (may wrap the lane).
+    fn len_u32(a: Self, b: Self) -> u32;
+}
+
+/// Floor division by a positive divisor: one truncating division and a fix-up (what
+/// `div_euclid` and `rem_euclid` compile to, minus their handling of negative divisors).
+macro_rules! floor_div_rem {
+    ($value:expr, $divisor:expr) => {{
+        debug_assert!($divisor > 0);
+        // A no-op that tells the optimiser the divisor is positive, which removes the
+        // division-by-zero and overflow checks.
+        let (value, divisor) = ($value, $divisor.max(1));
+        let (q, r) = (value / divisor, value % divisor);
+        if r < 0 {
+            (q - 1, r + divisor)
+        } else {
+            (q, r)
+        }
+    }};
 }
 
 impl Lane for i32 {
     const ZERO: Self = 0;
     const ONE: Self = 1;
-    const CLIP_MIN: i64 = -(FAST_LIMIT as i64);
-    const CLIP_MAX: i64 = FAST_LIMIT as i64 + 1;
+    const CLIP_MIN: i64 = -(FAST_BIAS as i64);
+    const CLIP_MAX: i64 = FAST_BIAS as i64;
 
     #[inline(always)]
     fn from_i32(value: i32) -> Self {
@@ -59,14 +82,20 @@ impl Lane for i32 {
 
     #[inline(always)]
     fn div_rem_floor(self, divisor: Self) -> (Self, Self) {
-        debug_assert!(divisor > 0);
-        (self.div_euclid(divisor), self.rem_euclid(divisor))
+        floor_div_rem!(self, divisor)
     }
 
     #[inline]
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering {
-        // Fast-path deltas are below 2^31 in magnitude: each product below 2^62.
-        (i64::from(a) * i64::from(b)).cmp(&(i64::from(c) * i64::from(d)))
+        // Fast-path deltas are below 2^31 in magnitude: each product below 2^62 and their
+        // difference below 2^63.
+        (i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d)).cmp(&0)
+    }
+
+    #[inline(always)]
+    fn len_u32(a: Self, b: Self) -> u32 {
+        // Up to 2^31 in the fast range: wraps i32, not u32.
+        a.wrapping_sub(b) as u32
     }
 }
 
@@ -93,8 +122,7 @@ impl Lane for i64 {
 
     #[inline(always)]
     fn div_rem_floor(self, divisor: Self) -> (Self, Self) {
-        debug_assert!(divisor > 0);
-        (self.div_euclid(divisor), self.rem_euclid(divisor))
+        floor_div_rem!(self, divisor)
     }
 
     #[inline]
@@ -102,10 +130,18 @@ impl Lane for i64 {
         // Deltas of i32 coordinates reach 2^32: products reach 2^64, beyond i64.
         (i128::from(a) * i128::from(b)).cmp(&(i128::from(c) * i128::from(d)))
     }
+
+    #[inline(always)]
+    fn len_u32(a: Self, b: Self) -> u32 {
+        (a - b) as u32
+    }
 }
 
-/// True when a coordinate can take the 32-bit fast path.
+/// True when all `values` can take the 32-bit fast path (lie in `-2^30..2^30`).
 #[inline(always)]
-pub(crate) const fn in_fast_range(value: i32) -> bool {
-    value >= -FAST_LIMIT && value <= FAST_LIMIT
+pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
+    values
+        .iter()
+        .fold(0, |acc, &v| acc | v.wrapping_add(FAST_BIAS))
+        >= 0
 }

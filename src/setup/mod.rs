@@ -9,12 +9,12 @@ use core::cmp::Ordering;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-pub(crate) use lane::{in_fast_range, Lane};
+pub(crate) use lane::{all_in_fast_range, Lane};
 
-/// A non-degenerate triangle with vertices sorted top to bottom (ties: left to right).
+/// A non-degenerate triangle with vertices sorted top to bottom.
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct Prepared<T> {
-    /// Vertices as `(x, y)`, sorted by `y`, then `x`.
+    /// Vertices as `(x, y)`, sorted by `y` (ties in any order: coverage does not depend on it).
     pub(crate) sorted: [(T, T); 3],
     /// True when the edge from the top to the bottom vertex bounds the triangle on the left.
     pub(crate) long_edge_left: bool,
@@ -23,8 +23,15 @@ pub(crate) struct Prepared<T> {
 impl<T: Lane> Prepared<T> {
     /// Sorts and orients; `None` for degenerate (zero-area) triangles.
     #[inline]
+    #[cfg(test)]
     pub(crate) fn new(vertices: [Point; 3]) -> Option<Self> {
-        let [a, b, c] = sort_top_to_bottom(vertices);
+        Self::from_sorted(sort_top_to_bottom(vertices))
+    }
+
+    /// Orients vertices already sorted by [`sort_top_to_bottom`]; `None` for degenerate
+    /// (zero-area) triangles.
+    #[inline(always)]
+    pub(crate) fn from_sorted([a, b, c]: [Point; 3]) -> Option<Self> {
         let lane = |p: Point| (T::from_i32(p.x), T::from_i32(p.y));
         let sorted = [lane(a), lane(b), lane(c)];
         let [(x0, y0), (x1, y1), (x2, y2)] = sorted;
@@ -40,31 +47,36 @@ impl<T: Lane> Prepared<T> {
             long_edge_left,
         })
     }
+
+    /// Smallest and largest vertex `x`.
+    #[inline(always)]
+    pub(crate) fn x_range(&self) -> (T, T) {
+        let [(a, _), (b, _), (c, _)] = self.sorted;
+        (a.min(b).min(c), a.max(b).max(c))
+    }
 }
 
-/// Sorts three points by `y`, then `x` (a three-comparison network).
+/// Sorts three points by `y` (a three-comparison network).
 #[inline(always)]
 pub(crate) fn sort_top_to_bottom(vertices: [Point; 3]) -> [Point; 3] {
-    let key = |p: &Point| (p.y, p.x);
     let [mut a, mut b, mut c] = vertices;
-    if key(&b) < key(&a) {
+    if b.y < a.y {
         core::mem::swap(&mut a, &mut b);
     }
-    if key(&c) < key(&b) {
+    if c.y < b.y {
         core::mem::swap(&mut b, &mut c);
-        if key(&b) < key(&a) {
+        if b.y < a.y {
             core::mem::swap(&mut a, &mut b);
         }
     }
     [a, b, c]
 }
 
-/// True when every coordinate of the three vertices can take the 32-bit fast path.
+/// True when every coordinate of three vertices can take the 32-bit fast path.
 #[inline(always)]
 pub(crate) fn fits_fast_path(vertices: &[Point; 3]) -> bool {
-    vertices
-        .iter()
-        .all(|p| in_fast_range(p.x) && in_fast_range(p.y))
+    let [a, b, c] = vertices;
+    all_in_fast_range([a.x, a.y, b.x, b.y, c.x, c.y])
 }
 
 /// A half-open pixel window `x0..x1` by `y0..y1` in lane coordinates.
@@ -108,9 +120,9 @@ mod tests {
     use embedded_graphics::geometry::Size;
 
     #[test]
-    fn sorts_by_row_then_column() {
+    fn sorts_by_row() {
         let p = |x, y| Point::new(x, y);
-        let expected = [p(1, 0), p(0, 5), p(3, 5)];
+        let points = [p(1, 0), p(0, 5), p(3, 7)];
         for perm in [
             [0, 1, 2],
             [0, 2, 1],
@@ -119,9 +131,12 @@ mod tests {
             [2, 0, 1],
             [2, 1, 0],
         ] {
-            let input = [expected[perm[0]], expected[perm[1]], expected[perm[2]]];
-            assert_eq!(sort_top_to_bottom(input), expected);
+            let input = [points[perm[0]], points[perm[1]], points[perm[2]]];
+            assert_eq!(sort_top_to_bottom(input), points);
         }
+        let tied = sort_top_to_bottom([p(3, 5), p(1, 0), p(0, 5)]);
+        assert_eq!(tied[0], p(1, 0));
+        assert_eq!((tied[1].y, tied[2].y), (5, 5));
     }
 
     #[test]

@@ -8,7 +8,7 @@ use embedded_graphics::{
 };
 
 use crate::{
-    coverage::{for_each_span, FillRule},
+    coverage::{walk, FillRule, Span, SpanSink},
     geometry::Triangle,
 };
 
@@ -94,9 +94,26 @@ impl<C: PixelColor> StyledDrawable<FlatStyle<C>> for Triangle {
         D: DrawTarget<Color = C>,
     {
         let clip = target.bounding_box();
-        for_each_span(self, style.fill_rule, &clip, |span| {
-            target.fill_solid(&span.rectangle(), style.color)
-        })
+        let mut sink = FillSpans {
+            target,
+            color: style.color,
+        };
+        walk(self, style.fill_rule, &clip, &mut sink)
+    }
+}
+
+/// Sends each span to `fill_solid`, inlined into the edge walk.
+struct FillSpans<'a, D, C> {
+    target: &'a mut D,
+    color: C,
+}
+
+impl<D: DrawTarget<Color = C>, C: PixelColor> SpanSink for FillSpans<'_, D, C> {
+    type Error = D::Error;
+
+    #[inline(always)]
+    fn span(&mut self, span: Span) -> Result<(), D::Error> {
+        self.target.fill_solid(&span.rectangle(), self.color)
     }
 }
 

@@ -1,0 +1,184 @@
+//! Renders FRAMES frames of a seeded scene into the crate's 320x240 `Rgb565` framebuffer, for
+//! instruction counting (see `benches/compare.sh`) or timing.
+//!
+//! ```text
+//! cargo run --release --example perf -- MODE SCENE FRAMES
+//! ```
+//!
+//! MODE: `flat` (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same scene and
+//! framebuffer). SCENE: `big`, `small`, `mesh`. The last line printed is
+//! `pixels=<pixels drawn> triangles=<triangles drawn>` over all frames; the line before it gives
+//! overdraw and gaps of one frame. Counting runs once, outside the timed frames, so instruction
+//! counts are best taken as the difference between two FRAMES values.
+
+#[path = "common/counting.rs"]
+mod counting;
+#[path = "common/scenes.rs"]
+mod scenes;
+
+use std::{process::ExitCode, time::Instant};
+
+use counting::Counting;
+use embedded_graphics::{
+    pixelcolor::Rgb565,
+    prelude::*,
+    primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
+};
+use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use trirast::{
+    coverage::{for_each_span, Span},
+    FillRule, FlatStyle, Framebuffer, Triangle,
+};
+
+const MODES: &[&str] = &["flat", "eg-flat", "fill-baseline", "coverage"];
+
+/// The spans of a frame, computed once, for the `fill-baseline` mode: what the flat fill costs
+/// if covering were free and each span were a bare `slice::fill`.
+fn frame_spans(scene: &[SceneTriangle]) -> Vec<(Span, Rgb565)> {
+    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut spans = Vec::new();
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        for_each_span(&Triangle::new(a, b, c), FillRule::TopLeft, &screen, |s| {
+            spans.push((s, t.color));
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+    }
+    spans
+}
+
+#[inline(never)]
+fn coverage_frame(scene: &[SceneTriangle]) -> u64 {
+    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut sum = 0u64;
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        for_each_span(&Triangle::new(a, b, c), FillRule::TopLeft, &screen, |s| {
+            sum += u64::from(s.len);
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+    }
+    sum
+}
+
+fn fill_baseline(spans: &[(Span, Rgb565)], pixels: &mut [Rgb565]) {
+    for &(s, color) in spans {
+        let start = s.y as usize * WIDTH as usize + s.x as usize;
+        pixels[start..start + s.len as usize].fill(color);
+    }
+}
+
+#[inline(never)]
+fn draw_frame<D>(mode: &str, scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    match mode {
+        "flat" => {
+            for t in scene {
+                let [a, b, c] = t.vertices;
+                Triangle::new(a, b, c)
+                    .into_styled(FlatStyle::new(t.color))
+                    .draw(target)
+                    .unwrap();
+            }
+        }
+        "eg-flat" => {
+            for t in scene {
+                let [a, b, c] = t.vertices;
+                EgTriangle::new(a, b, c)
+                    .into_styled(PrimitiveStyle::with_fill(t.color))
+                    .draw(target)
+                    .unwrap();
+            }
+        }
+        "fill-baseline" | "coverage" => {
+            // Only for counting: the timed loop fills precomputed spans directly.
+            for (span, color) in frame_spans(scene) {
+                target.fill_solid(&span.rectangle(), color).unwrap();
+            }
+        }
+        _ => unreachable!("mode checked in main"),
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = || {
+        eprintln!(
+            "usage: perf MODE SCENE FRAMES\n  MODE: {}\n  SCENE: big | small | mesh",
+            MODES.join(" | ")
+        );
+        ExitCode::from(2)
+    };
+    let [mode, scene, frames] = args.as_slice() else {
+        return usage();
+    };
+    let (Some(scene_kind), Ok(frames)) = (Scene::parse(scene), frames.parse::<u64>()) else {
+        return usage();
+    };
+    if !MODES.contains(&mode.as_str()) {
+        return usage();
+    }
+    let scene = scene_kind.build();
+    let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
+    let mut fb = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).expect("buffer sized for the screen");
+
+    // One counted frame (not part of the FRAMES loop).
+    let (per_frame, overdraw, gaps) = {
+        let mut counting = Counting::new(&mut fb);
+        draw_frame(mode, &scene, &mut counting);
+        (counting.pixels(), counting.overdraw(), counting.gaps())
+    };
+
+    let start = Instant::now();
+    if mode == "fill-baseline" {
+        // Spans are computed once; only the fills repeat.
+        let spans = frame_spans(&scene);
+        for _ in 0..frames {
+            fill_baseline(std::hint::black_box(&spans), fb.pixels_mut());
+        }
+    } else if mode == "coverage" {
+        // Edge walking alone: spans are summed, nothing is drawn.
+        let mut sum = 0u64;
+        for _ in 0..frames {
+            sum += coverage_frame(std::hint::black_box(&scene));
+        }
+        std::hint::black_box(sum);
+    } else {
+        for _ in 0..frames {
+            draw_frame(mode, std::hint::black_box(&scene), &mut fb);
+        }
+    }
+    let elapsed = start.elapsed();
+    let total = per_frame * frames;
+    let secs = elapsed.as_secs_f64();
+    let rate = if secs > 0.0 {
+        total as f64 / secs / 1e6
+    } else {
+        f64::NAN
+    };
+    println!(
+        "mode={mode} scene={} frames={frames} time={:.3}ms mpixels_per_s={rate:.1} checksum={:08x}",
+        scene_kind.name(),
+        secs * 1e3,
+        fnv1a(fb.pixels())
+    );
+    println!("per_frame: pixels={per_frame} overdraw={overdraw} gaps={gaps}");
+    println!("pixels={total} triangles={}", scene.len() as u64 * frames);
+    ExitCode::SUCCESS
+}
+
+/// FNV-1a over the frame's raw little-endian bytes.
+fn fnv1a(pixels: &[Rgb565]) -> u32 {
+    let mut h: u32 = 0x811C_9DC5;
+    for p in pixels {
+        for b in p.into_storage().to_le_bytes() {
+            h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+        }
+    }
+    h
+}
