@@ -1,7 +1,7 @@
 //! Coverage, the second pipeline stage: which pixels of each row a triangle covers.
 //!
 //! Rows are walked top to bottom. The left and right bounds of each row come from
-//! [edge steppers](edge) (integer quotient and error term, no per-row division), are clipped to
+//! edge steppers (integer quotient and error term, no per-row division), are clipped to
 //! the window and handed on as one [`Span`] per row. The result is bit for bit the exact
 //! half-space test under the chosen [`FillRule`].
 
@@ -275,8 +275,14 @@ fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_L
         FillRule::TopLeft => (Rounding::Ceil, bottom.1),
         FillRule::Inclusive => (Rounding::FloorPlusOne, bottom.1 + T::ONE),
     };
-    let first_row = top.1.max(clip.y0);
+    let mut first_row = top.1.max(clip.y0);
     let end_row = rows_end.min(clip.y1);
+    // Under the top-left rule the row of a lone top vertex is empty (its span is
+    // `x0..x0`): start one row lower, stepping the edges once instead of walking a row.
+    let skip_apex = rule == FillRule::TopLeft && first_row == top.1 && top.1 < middle.1;
+    if skip_apex {
+        first_row += T::ONE;
+    }
     if first_row >= end_row {
         return Ok(());
     }
@@ -286,13 +292,19 @@ fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_L
         (right_rounding, Rounding::Ceil)
     };
 
-    let mut long = T::Edge::start(
-        top,
-        bottom,
-        long_rounding,
-        first_row,
-        end_row - first_row > T::ONE,
-    );
+    let mut long = if skip_apex {
+        let mut edge = T::Edge::start(top, bottom, long_rounding, top.1, true);
+        edge.advance();
+        edge
+    } else {
+        T::Edge::start(
+            top,
+            bottom,
+            long_rounding,
+            first_row,
+            end_row - first_row > T::ONE,
+        )
+    };
     // The upper short edge serves rows above the middle vertex, the lower one the rest. With a
     // flat bottom (which only the inclusive rule reaches) the upper edge also serves the middle
     // row, where it ends exactly; the lower edge is then never started.
@@ -304,7 +316,13 @@ fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_L
     let mut row = first_row;
     if row < switch_row {
         let rows = switch_row.min(end_row) - row;
-        let short = T::Edge::start(top, middle, short_rounding, row, rows > T::ONE);
+        let short = if skip_apex {
+            let mut edge = T::Edge::start(top, middle, short_rounding, top.1, true);
+            edge.advance();
+            edge
+        } else {
+            T::Edge::start(top, middle, short_rounding, row, rows > T::ONE)
+        };
         rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)?;
         row += rows;
         if row == end_row {

@@ -37,6 +37,9 @@ pub(crate) trait Lane:
     fn div_rem_floor(self, divisor: Self) -> (Self, Self);
     /// Exact sign of `a * b - c * d`.
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering;
+    /// `Some(a * b - c * d > 0)`, or `None` when it is zero (a cheaper form of
+    /// [`Self::cross_sign`] for setup).
+    fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool>;
     /// `(a - b)` as a `u32` length, for `b <= a` with `a - b < 2^32` (may wrap the lane).
     fn len_u32(a: Self, b: Self) -> u32;
 }
@@ -93,6 +96,12 @@ impl Lane for i32 {
     }
 
     #[inline(always)]
+    fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool> {
+        let cross = i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d);
+        (cross != 0).then_some(cross > 0)
+    }
+
+    #[inline(always)]
     fn len_u32(a: Self, b: Self) -> u32 {
         // Up to 2^31 in the fast range: wraps i32, not u32.
         a.wrapping_sub(b) as u32
@@ -129,6 +138,14 @@ impl Lane for i64 {
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering {
         // Deltas of i32 coordinates reach 2^32: products reach 2^64, beyond i64.
         (i128::from(a) * i128::from(b)).cmp(&(i128::from(c) * i128::from(d)))
+    }
+
+    #[inline]
+    fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool> {
+        match Self::cross_sign(a, b, c, d) {
+            Ordering::Equal => None,
+            sign => Some(sign == Ordering::Greater),
+        }
     }
 
     #[inline(always)]

@@ -5,8 +5,6 @@
 
 pub(crate) mod lane;
 
-use core::cmp::Ordering;
-
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 pub(crate) use lane::{all_in_fast_range, Lane};
@@ -37,11 +35,7 @@ impl<T: Lane> Prepared<T> {
         let [(x0, y0), (x1, y1), (x2, y2)] = sorted;
         // Sign of the cross product (v1 - v0) x (v2 - v0): positive when the middle vertex lies
         // right of the long edge, which then bounds the triangle on the left.
-        let long_edge_left = match T::cross_sign(x1 - x0, y2 - y0, y1 - y0, x2 - x0) {
-            Ordering::Greater => true,
-            Ordering::Less => false,
-            Ordering::Equal => return None,
-        };
+        let long_edge_left = T::cross_positive(x1 - x0, y2 - y0, y1 - y0, x2 - x0)?;
         Some(Self {
             sorted,
             long_edge_left,

@@ -162,9 +162,11 @@ where
         // Sides fit i32, so negative coordinates wrap to values above them, and the sum of two
         // u32 cannot overflow u64.
         let (row, column) = (y as u32 as usize, x as u32);
-        if row < self.height && u64::from(column) + u64::from(len) <= self.width as u64 {
-            // Inside: the rasterizer's spans always are. (The lookup cannot fail here; it only
-            // spares a panic path.)
+        // With 64-bit `usize`, `row * width` cannot wrap (both are below 2^32), so the slice
+        // bound alone rejects rows below the image; 32-bit targets check the row first.
+        let row_inside = usize::BITS >= 64 || row < self.height;
+        if row_inside && u64::from(column) + u64::from(len) <= self.width as u64 {
+            // In this row: the rasterizer's spans always are.
             let start = row * self.width + column as usize;
             if let Some(run) = self.pixels.get_mut(start..start + len as usize) {
                 fill_run(run, value);
@@ -303,37 +305,41 @@ where
     }
 }
 
-/// `slice::fill`, faster for the short runs triangles produce: blocks of sixteen elements (two
-/// 16-byte stores for `u16` pixels), and a run's ragged end written as blocks that overlap the
-/// previous ones. Runs of four to fifteen take two overlapping blocks, shorter ones single
-/// stores. No loop runs per element, which also keeps the compiler from vectorising one with
-/// masks.
+/// `slice::fill`, faster for the short runs triangles produce.
+///
+/// Runs are written in blocks of sixteen elements (two 16-byte stores for `u16` pixels), eight
+/// or single elements; a run's ragged end is one more block overlapping the previous one.
+/// Runs up to 48 elements need no loop at all, so nothing is spent on loop set-up, and no loop
+/// runs per element, which also keeps the compiler from vectorising one with masks.
 #[inline(always)]
 fn fill_run<S: Copy>(run: &mut [S], value: S) {
     let n = run.len();
-    if n >= 16 {
-        let block = [value; 16];
-        let mut start = 0;
-        while start + 16 < n {
-            run[start..start + 16].copy_from_slice(&block);
-            start += 16;
+    if n < 8 {
+        for i in [0, 1, 2, 3] {
+            if let Some(p) = run.get_mut(i) {
+                *p = value;
+            }
         }
-        run[n - 16..].copy_from_slice(&block);
-    } else if n >= 8 {
+        if n > 4 {
+            for i in [n - 4, n - 3, n - 2, n - 1] {
+                run[i] = value;
+            }
+        }
+    } else if n < 16 {
         run[..8].copy_from_slice(&[value; 8]);
         run[n - 8..].copy_from_slice(&[value; 8]);
-    } else if n >= 4 {
-        run[..4].copy_from_slice(&[value; 4]);
-        run[n - 4..].copy_from_slice(&[value; 4]);
-    } else if let [first, .., last] = run {
-        // Two or three: the ends (and, for three, the middle through `last`'s neighbour).
-        *first = value;
-        *last = value;
-        if let [_, middle, _] = run {
-            *middle = value;
+    } else {
+        let block = [value; 16];
+        run[..16].copy_from_slice(&block);
+        if n > 32 {
+            run[16..32].copy_from_slice(&block);
+            let mut start = 32;
+            while start + 16 < n {
+                run[start..start + 16].copy_from_slice(&block);
+                start += 16;
+            }
         }
-    } else if let [only] = run {
-        *only = value;
+        run[n - 16..].copy_from_slice(&block);
     }
 }
 
@@ -425,6 +431,45 @@ mod tests {
             v,
             [3, 3, 3, 3, 3, 9, 9, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 7]
         );
+    }
+
+    #[test]
+    fn fill_run_writes_exactly_the_run() {
+        for len in 0..120 {
+            for offset in 0..3 {
+                let mut got = [0u16; 130];
+                let mut want = [0u16; 130];
+                fill_run(&mut got[offset..offset + len], 7);
+                want[offset..offset + len].fill(7);
+                assert_eq!(got, want, "len {len} offset {offset}");
+            }
+        }
+    }
+
+    #[test]
+    fn single_rows_outside_are_ignored() {
+        let mut px = [gray(0); 6 * 3];
+        let mut fb = Framebuffer::new(&mut px, 6, 3).unwrap();
+        for (x, y, w) in [
+            (0, 3, 6),
+            (0, -1, 6),
+            (0, i32::MAX, 6),
+            (0, i32::MIN, 6),
+            (6, 0, 1),
+            (i32::MAX, 1, 9),
+            (-7, 2, 7),
+        ] {
+            fb.fill_solid(&Rectangle::new(Point::new(x, y), Size::new(w, 1)), gray(1))
+                .unwrap();
+        }
+        assert!(px.iter().all(|c| c.luma() == 0));
+        let mut fb = Framebuffer::new(&mut px, 6, 3).unwrap();
+        fb.fill_solid(&Rectangle::new(Point::new(-2, 2), Size::new(4, 1)), gray(5))
+            .unwrap();
+        fb.fill_solid(&Rectangle::new(Point::new(4, 0), Size::new(9, 1)), gray(6))
+            .unwrap();
+        let v: [u8; 18] = px.map(|c| c.luma());
+        assert_eq!(v, [0, 0, 0, 0, 6, 6, 0, 0, 0, 0, 0, 0, 5, 5, 0, 0, 0, 0]);
     }
 
     #[test]
