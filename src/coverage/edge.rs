@@ -52,10 +52,13 @@ impl WalkLane for i64 {
 /// That matters most on cores without a divide instruction.
 #[inline(always)]
 fn increments<T: Lane>(dx: T, dy: T) -> (T, T) {
-    if dx >= T::ZERO && dx < dy {
-        (T::ZERO, dx)
-    } else if dx < T::ZERO && dx >= T::ZERO - dy {
-        (T::ZERO - T::ONE, dx + dy)
+    if T::in_half_open(dx, dy) {
+        // -dy <= dx < dy: quotient -1 below zero, 0 above.
+        if dx < T::ZERO {
+            (T::ZERO - T::ONE, dx + dy)
+        } else {
+            (T::ZERO, dx)
+        }
     } else {
         dx.div_rem_floor(dy)
     }

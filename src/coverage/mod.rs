@@ -17,7 +17,7 @@ pub use fill_rule::FillRule;
 
 use crate::{
     geometry::Triangle,
-    setup::{fits_fast_path, sort_top_to_bottom, Clip, Prepared},
+    setup::{fits_fast_path, lane::FAST_LIMIT, sort_top_to_bottom, Clip, Prepared},
 };
 use edge::{EdgeWalk, Rounding, WalkLane};
 
@@ -199,12 +199,24 @@ pub fn walk<K: SpanSink + ?Sized>(
     sink: &mut K,
 ) -> Result<(), K::Error> {
     let sorted = sort_top_to_bottom(triangle.vertices);
-    if fits_fast_path(&sorted) {
-        walk_lane::<i32, K>(sorted, rule, clip, sink)
+    let [a, b, c] = sorted;
+    let (x_min, x_max) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
+    let window = Window::new(clip);
+    // Span bounds lie within x_min..=x_max + 1 and rows within a.y..=c.y: a triangle inside
+    // the window needs no clipping at all, and its edges all start at their upper vertex.
+    // Inside a window within the fast range, it is within the fast range too.
+    let inside_x = x_min >= window.x0 && x_max < window.x1;
+    if inside_x && a.y >= window.y0 && c.y < window.y1 && window.in_fast_range() {
+        walk_lane::<i32, K, false, false>(sorted, rule, clip, sink)
+    } else if fits_fast_path(&sorted) {
+        if inside_x {
+            walk_lane::<i32, K, true, false>(sorted, rule, clip, sink)
+        } else {
+            walk_lane::<i32, K, true, true>(sorted, rule, clip, sink)
+        }
     } else {
         // Scalars, not references: the cold call should not force the triangle and window
         // into memory on the fast path.
-        let [a, b, c] = sorted;
         let (tl, size) = (clip.top_left, clip.size);
         walk_wide(
             [a.x, a.y, b.x, b.y, c.x, c.y],
@@ -212,6 +224,38 @@ pub fn walk<K: SpanSink + ?Sized>(
             [tl.x, tl.y, size.width as i32, size.height as i32],
             sink,
         )
+    }
+}
+
+/// A window's half-open `i32` bounds, with the ends saturated at `i32::MAX` (which only makes
+/// the inside test more conservative).
+#[derive(Copy, Clone)]
+struct Window {
+    x0: i32,
+    x1: i32,
+    y0: i32,
+    y1: i32,
+}
+
+impl Window {
+    #[inline(always)]
+    fn new(area: &Rectangle) -> Self {
+        let end = |start: i32, len: u32| {
+            i32::try_from(i64::from(start) + i64::from(len)).unwrap_or(i32::MAX)
+        };
+        Self {
+            x0: area.top_left.x,
+            x1: end(area.top_left.x, area.size.width),
+            y0: area.top_left.y,
+            y1: end(area.top_left.y, area.size.height),
+        }
+    }
+
+    /// True when every pixel of the window lies in the fast range.
+    #[inline(always)]
+    fn in_fast_range(self) -> bool {
+        let limit = FAST_LIMIT + 1;
+        self.x0 >= -limit && self.y0 >= -limit && self.x1 <= limit && self.y1 <= limit
     }
 }
 
@@ -233,36 +277,51 @@ fn walk_wide<K: SpanSink + ?Sized>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    walk_lane::<i64, K>(sorted, rule, &clip, sink)
+    walk_lane::<i64, K, true, true>(sorted, rule, &clip, sink)
 }
 
-/// Walks a triangle whose vertices are sorted top to bottom.
+/// Walks a triangle whose vertices are sorted top to bottom. `CLIP` is false only for
+/// triangles inside the window; `CLIP_X` is false for triangles inside it horizontally.
 #[inline(always)]
-fn walk_lane<T: WalkLane, K: SpanSink + ?Sized>(
+fn walk_lane<T: WalkLane, K: SpanSink + ?Sized, const CLIP: bool, const CLIP_X: bool>(
     sorted: [Point; 3],
     rule: FillRule,
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let Some(clip) = Clip::<T>::from_rectangle(clip) else {
-        return Ok(());
+    let clip = if CLIP {
+        match Clip::<T>::from_rectangle(clip) {
+            Some(clip) => clip,
+            None => return Ok(()),
+        }
+    } else {
+        // Unused: nothing is clipped.
+        Clip {
+            x0: T::ZERO,
+            x1: T::ZERO,
+            y0: T::ZERO,
+            y1: T::ZERO,
+        }
     };
     let Some(triangle) = Prepared::<T>::from_sorted(sorted) else {
         return Ok(());
     };
-    let (x_min, x_max) = triangle.x_range();
-    // Bounds lie within x_min..=x_max + 1: inside the window, rows need no clipping in x.
-    let inside = x_min >= clip.x0 && x_max < clip.x1;
-    match (inside, triangle.long_edge_left) {
-        (true, true) => walk_rows::<T, K, false, true>(&triangle, rule, &clip, sink),
-        (true, false) => walk_rows::<T, K, false, false>(&triangle, rule, &clip, sink),
-        (false, true) => walk_rows::<T, K, true, true>(&triangle, rule, &clip, sink),
-        (false, false) => walk_rows::<T, K, true, false>(&triangle, rule, &clip, sink),
+    if triangle.long_edge_left {
+        walk_rows::<T, K, CLIP, CLIP_X, true>(&triangle, rule, &clip, sink)
+    } else {
+        walk_rows::<T, K, CLIP, CLIP_X, false>(&triangle, rule, &clip, sink)
     }
 }
 
+/// `CLIP` is false for triangles inside the window, which skip every clipping step.
 #[inline(always)]
-fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_LEFT: bool>(
+fn walk_rows<
+    T: WalkLane,
+    K: SpanSink + ?Sized,
+    const CLIP: bool,
+    const CLIP_X: bool,
+    const LONG_LEFT: bool,
+>(
     triangle: &Prepared<T>,
     rule: FillRule,
     clip: &Clip<T>,
@@ -275,8 +334,11 @@ fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_L
         FillRule::TopLeft => (Rounding::Ceil, bottom.1),
         FillRule::Inclusive => (Rounding::FloorPlusOne, bottom.1 + T::ONE),
     };
-    let mut first_row = top.1.max(clip.y0);
-    let end_row = rows_end.min(clip.y1);
+    let (mut first_row, end_row) = if CLIP {
+        (top.1.max(clip.y0), rows_end.min(clip.y1))
+    } else {
+        (top.1, rows_end)
+    };
     // Under the top-left rule the row of a lone top vertex is empty (its span is
     // `x0..x0`): start one row lower, stepping the edges once instead of walking a row.
     let skip_apex = rule == FillRule::TopLeft && first_row == top.1 && top.1 < middle.1;
@@ -330,6 +392,8 @@ fn walk_rows<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_L
         }
         long.advance();
     }
+    // Unclipped, this row is the middle vertex's (after a one-row top half or a flat top).
+    let row = if CLIP { row } else { middle.1 };
     let rows = end_row - row;
     let short = T::Edge::start(middle, bottom, short_rounding, row, rows > T::ONE);
     rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)

@@ -42,6 +42,8 @@ pub(crate) trait Lane:
     fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool>;
     /// `(a - b)` as a `u32` length, for `b <= a` with `a - b < 2^32` (may wrap the lane).
     fn len_u32(a: Self, b: Self) -> u32;
+    /// `-limit <= value < limit`, for `0 < limit`, in one unsigned comparison.
+    fn in_half_open(value: Self, limit: Self) -> bool;
 }
 
 /// Floor division by a positive divisor: one truncating division and a fix-up (what
@@ -106,6 +108,12 @@ impl Lane for i32 {
         // Up to 2^31 in the fast range: wraps i32, not u32.
         a.wrapping_sub(b) as u32
     }
+
+    #[inline(always)]
+    fn in_half_open(value: Self, limit: Self) -> bool {
+        // Fast-path deltas are below 2^31: the shifted value and 2 * limit fit u32.
+        (value.wrapping_add(limit) as u32) < (limit as u32).wrapping_mul(2)
+    }
 }
 
 impl Lane for i64 {
@@ -151,6 +159,12 @@ impl Lane for i64 {
     #[inline(always)]
     fn len_u32(a: Self, b: Self) -> u32 {
         (a - b) as u32
+    }
+
+    #[inline(always)]
+    fn in_half_open(value: Self, limit: Self) -> bool {
+        // Deltas of i32 coordinates are below 2^33: the shifted value and 2 * limit fit u64.
+        (value.wrapping_add(limit) as u64) < (limit as u64).wrapping_mul(2)
     }
 }
 

@@ -41,13 +41,6 @@ impl<T: Lane> Prepared<T> {
             long_edge_left,
         })
     }
-
-    /// Smallest and largest vertex `x`.
-    #[inline(always)]
-    pub(crate) fn x_range(&self) -> (T, T) {
-        let [(a, _), (b, _), (c, _)] = self.sorted;
-        (a.min(b).min(c), a.max(b).max(c))
-    }
 }
 
 /// Sorts three points by `y` (a three-comparison network).
