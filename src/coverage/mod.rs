@@ -200,13 +200,12 @@ pub fn walk<K: SpanSink + ?Sized>(
 ) -> Result<(), K::Error> {
     let sorted = sort_top_to_bottom(triangle.vertices);
     let [a, b, c] = sorted;
-    let (x_min, x_max) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
     let window = Window::new(clip);
     // Span bounds lie within x_min..=x_max + 1 and rows within a.y..=c.y: a triangle inside
     // the window needs no clipping at all, and its edges all start at their upper vertex.
     // Inside a window within the fast range, it is within the fast range too.
-    let inside_x = x_min >= window.x0 && x_max < window.x1;
-    if inside_x && a.y >= window.y0 && c.y < window.y1 && window.in_fast_range() {
+    let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
+    if inside_x && window.holds_y(a.y) && window.holds_y(c.y) && window.in_fast_range() {
         walk_lane::<i32, K, false, false>(sorted, rule, clip, sink)
     } else if fits_fast_path(&sorted) {
         if inside_x {
@@ -249,6 +248,18 @@ impl Window {
             y0: area.top_left.y,
             y1: end(area.top_left.y, area.size.height),
         }
+    }
+
+    /// `x0 <= x < x1`, in one unsigned comparison.
+    #[inline(always)]
+    fn holds_x(self, x: i32) -> bool {
+        (x.wrapping_sub(self.x0) as u32) < self.x1.wrapping_sub(self.x0) as u32
+    }
+
+    /// `y0 <= y < y1`, in one unsigned comparison.
+    #[inline(always)]
+    fn holds_y(self, y: i32) -> bool {
+        (y.wrapping_sub(self.y0) as u32) < self.y1.wrapping_sub(self.y0) as u32
     }
 
     /// True when every pixel of the window lies in the fast range.
@@ -364,7 +375,8 @@ fn walk_rows<
             bottom,
             long_rounding,
             first_row,
-            end_row - first_row > T::ONE,
+            // Unclipped, the long edge nearly always advances: skip the test.
+            !CLIP || end_row - first_row > T::ONE,
         )
     };
     // The upper short edge serves rows above the middle vertex, the lower one the rest. With a
@@ -377,7 +389,12 @@ fn walk_rows<
     };
     let mut row = first_row;
     if row < switch_row {
-        let rows = switch_row.min(end_row) - row;
+        // Unclipped, the middle row never lies past the end.
+        let rows = if CLIP {
+            switch_row.min(end_row)
+        } else {
+            switch_row
+        } - row;
         let short = if skip_apex {
             let mut edge = T::Edge::start(top, middle, short_rounding, top.1, true);
             edge.advance();

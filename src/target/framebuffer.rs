@@ -308,21 +308,27 @@ where
 /// `slice::fill`, faster for the short runs triangles produce.
 ///
 /// Runs are written in blocks of sixteen elements (two 16-byte stores for `u16` pixels), eight
-/// or single elements; a run's ragged end is one more block overlapping the previous one.
+/// or single elements; a run's ragged end is one more block overlapping the previous one, and
+/// runs under eight are written from both ends at once.
 /// Runs up to 48 elements need no loop at all, so nothing is spent on loop set-up, and no loop
 /// runs per element, which also keeps the compiler from vectorising one with masks.
 #[inline(always)]
 fn fill_run<S: Copy>(run: &mut [S], value: S) {
     let n = run.len();
     if n < 8 {
-        for i in [0, 1, 2, 3] {
-            if let Some(p) = run.get_mut(i) {
-                *p = value;
-            }
+        // Pairs from both ends: two stores cover one or two elements, four cover up to four.
+        if n == 0 {
+            return;
         }
-        if n > 4 {
-            for i in [n - 4, n - 3, n - 2, n - 1] {
-                run[i] = value;
+        run[0] = value;
+        run[n - 1] = value;
+        if n > 2 {
+            run[1] = value;
+            run[n - 2] = value;
+            if n > 4 {
+                run[2] = value;
+                run[3] = value;
+                run[n - 3] = value;
             }
         }
     } else if n < 16 {
