@@ -5,8 +5,10 @@
 //! cargo run --release --example perf -- MODE SCENE FRAMES
 //! ```
 //!
-//! MODE: `flat` (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same scene and
-//! framebuffer). SCENE: `big`, `small`, `mesh`. The last line printed is
+//! MODE: `flat`, `gouraud` (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
+//! scene and framebuffer), `fill-baseline` (the flat spans, precomputed, filled by
+//! `slice::fill`: no covering at all), `coverage` (edge walking alone, nothing drawn).
+//! SCENE: `big`, `small`, `mesh`. The last line printed is
 //! `pixels=<pixels drawn> triangles=<triangles drawn>` over all frames; the line before it gives
 //! overdraw and gaps of one frame. Counting runs once, outside the timed frames, so instruction
 //! counts are best taken as the difference between two FRAMES values.
@@ -27,10 +29,10 @@ use embedded_graphics::{
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
     coverage::{for_each_span, Span},
-    FillRule, FlatStyle, Framebuffer, Triangle,
+    FillRule, FlatStyle, Framebuffer, GouraudStyle, Triangle,
 };
 
-const MODES: &[&str] = &["flat", "eg-flat", "fill-baseline", "coverage"];
+const MODES: &[&str] = &["flat", "gouraud", "eg-flat", "fill-baseline", "coverage"];
 
 /// The spans of a frame, computed once, for the `fill-baseline` mode: what the flat fill costs
 /// if covering were free and each span were a bare `slice::fill`.
@@ -82,6 +84,15 @@ where
                 let [a, b, c] = t.vertices;
                 Triangle::new(a, b, c)
                     .into_styled(FlatStyle::new(t.color))
+                    .draw(target)
+                    .unwrap();
+            }
+        }
+        "gouraud" => {
+            for t in scene {
+                let [a, b, c] = t.vertices;
+                Triangle::new(a, b, c)
+                    .into_styled(GouraudStyle::new(t.vertex_colors))
                     .draw(target)
                     .unwrap();
             }

@@ -57,12 +57,15 @@
     clippy::cast_possible_wrap,
     clippy::cast_sign_loss,
     clippy::module_name_repetitions,
-    clippy::inline_always
+    clippy::inline_always,
+    // Loops over N parallel arrays read best indexed.
+    clippy::needless_range_loop
 )]
 
 pub mod coverage;
 mod error;
 pub mod geometry;
+pub mod interpolate;
 mod setup;
 pub mod shading;
 pub mod target;
@@ -71,7 +74,7 @@ pub use coverage::FillRule;
 pub use error::Error;
 pub use geometry::{Orientation, Triangle};
 pub use setup::lane::FAST_LIMIT;
-pub use shading::FlatStyle;
+pub use shading::{FlatStyle, GouraudStyle, ShaderStyle};
 pub use target::{Framebuffer, StoredPixel};
 
 /// The README's examples, compiled and run as doc tests.

@@ -4,5 +4,10 @@
 //! `into_styled`, and the result is [`Drawable`](embedded_graphics::Drawable).
 
 mod flat;
+mod gouraud;
+mod shader;
+mod spans;
 
 pub use flat::FlatStyle;
+pub use gouraud::{GouraudColor, GouraudStyle};
+pub use shader::{Fragment, ShaderStyle};

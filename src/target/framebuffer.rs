@@ -159,18 +159,9 @@ where
     /// Fills `len` pixels of row `y` from column `x`, clipped.
     #[inline(always)]
     fn fill_row(&mut self, y: i32, x: i32, len: u32, value: S) {
-        // Sides fit i32, so negative coordinates wrap to values above them, and the sum of two
-        // u32 cannot overflow u64.
-        let (row, column) = (y as u32 as usize, x as u32);
-        // With 64-bit `usize`, `row * width` cannot wrap (both are below 2^32), so the slice
-        // bound alone rejects rows below the image; 32-bit targets check the row first.
-        let row_inside = usize::BITS >= 64 || row < self.height;
-        if row_inside && u64::from(column) + u64::from(len) <= self.width as u64 {
+        if let Some(run) = self.row_run(y, x, len) {
             // In this row: the rasterizer's spans always are.
-            let start = row * self.width + column as usize;
-            if let Some(run) = self.pixels.get_mut(start..start + len as usize) {
-                fill_run(run, value);
-            }
+            fill_run(run, value);
         } else {
             self.fill_row_clipped(y, x, len, value);
         }
@@ -189,6 +180,50 @@ where
         let column = x.max(0) as usize;
         if column < end {
             fill_run(&mut self.pixels[start + column..start + end], value);
+        }
+    }
+
+    /// `fill_contiguous` for areas of several rows or partly outside.
+    #[inline(never)]
+    fn fill_contiguous_clipped<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
+        let Some(window) = self.clip(area) else {
+            return;
+        };
+        let width = self.width;
+        // Colours of the area's pixels left of, right of and above the window are skipped.
+        let left = (window.x0 as i64 - i64::from(area.top_left.x)) as u64;
+        let right = u64::from(area.size.width) - left - (window.x1 - window.x0) as u64;
+        let above = (window.y0 as i64 - i64::from(area.top_left.y)) as u64;
+        skip(&mut colors, above * u64::from(area.size.width));
+        for y in window.y0..window.y1 {
+            skip(&mut colors, left);
+            let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
+            let mut written = 0;
+            for (dst, color) in row.iter_mut().zip(colors.by_ref()) {
+                *dst = S::store(color);
+                written += 1;
+            }
+            if written < row.len() {
+                break;
+            }
+            skip(&mut colors, right);
+        }
+    }
+
+    /// The pixels of one row from column `x`, `len` long, if all inside the image.
+    #[inline(always)]
+    fn row_run(&mut self, y: i32, x: i32, len: u32) -> Option<&mut [S]> {
+        // Sides fit i32, so negative coordinates wrap to values above them, and the sum of two
+        // u32 cannot overflow u64. With 64-bit `usize`, `row * width` cannot wrap either (both
+        // are below 2^32), so the slice bound alone rejects rows below the image; 32-bit
+        // targets check the row first.
+        let (row, column) = (y as u32 as usize, x as u32);
+        let row_inside = usize::BITS >= 64 || row < self.height;
+        if row_inside && u64::from(column) + u64::from(len) <= self.width as u64 {
+            let start = row * self.width + column as usize;
+            self.pixels.get_mut(start..start + len as usize)
+        } else {
+            None
         }
     }
 
@@ -253,33 +288,22 @@ where
         Ok(())
     }
 
+    #[inline(always)]
     fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
     where
         I: IntoIterator<Item = C>,
     {
-        let Some(window) = self.clip(area) else {
-            return Ok(());
-        };
-        let mut colors = colors.into_iter();
-        let width = self.width;
-        // Colours of the area's pixels left of, right of and above the window are skipped.
-        let left = (i64::from(window.x0 as i32) - i64::from(area.top_left.x)) as u64;
-        let right = u64::from(area.size.width) - left - (window.x1 - window.x0) as u64;
-        let above = (i64::from(window.y0 as i32) - i64::from(area.top_left.y)) as u64;
-        skip(&mut colors, above * u64::from(area.size.width));
-        for y in window.y0..window.y1 {
-            skip(&mut colors, left);
-            let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
-            let mut written = 0;
-            for (dst, color) in row.iter_mut().zip(colors.by_ref()) {
-                *dst = S::store(color);
-                written += 1;
+        if area.size.height == 1 {
+            // One row inside, the shading styles' case: a plain zip, which the compiler can
+            // vectorise when the colours are computed by additions.
+            if let Some(run) = self.row_run(area.top_left.y, area.top_left.x, area.size.width) {
+                for (dst, color) in run.iter_mut().zip(colors) {
+                    *dst = S::store(color);
+                }
+                return Ok(());
             }
-            if written < row.len() {
-                break;
-            }
-            skip(&mut colors, right);
         }
+        self.fill_contiguous_clipped(area, colors.into_iter());
         Ok(())
     }
 

@@ -259,3 +259,100 @@ impl Rng {
         (i64::from(lo) + (self.next_u64() % span) as i64) as i32
     }
 }
+
+/// Exact rational interpolation: the value at `p` of the plane through `(v[i], a[i])`, as
+/// `(numerator, denominator)` with a positive denominator.
+pub fn exact_plane(v: [Point; 3], a: [i64; 3], p: Point) -> Option<(i128, i128)> {
+    let v = v.map(|q| (i128::from(q.x), i128::from(q.y)));
+    let (px, py) = (i128::from(p.x), i128::from(p.y));
+    let edge =
+        |s: (i128, i128), t: (i128, i128)| (t.0 - s.0) * (py - s.1) - (t.1 - s.1) * (px - s.0);
+    let area = (v[2].0 - v[1].0) * (v[0].1 - v[1].1) - (v[2].1 - v[1].1) * (v[0].0 - v[1].0);
+    if area == 0 {
+        return None;
+    }
+    // Weight of vertex i: the edge function of the opposite edge, over the area.
+    let w = [edge(v[1], v[2]), edge(v[2], v[0]), edge(v[0], v[1])];
+    let num: i128 = (0..3).map(|i| w[i] * i128::from(a[i])).sum();
+    Some(if area < 0 { (-num, -area) } else { (num, area) })
+}
+
+/// `num / den` rounded half up (den > 0).
+pub fn round_half_up(num: i128, den: i128) -> i128 {
+    (2 * num + den).div_euclid(2 * den)
+}
+
+/// A target of any origin and size that records the last colour of each pixel and how many
+/// times it was written.
+pub struct Recorder<C> {
+    pub area: Rectangle,
+    pub colors: Vec<Option<C>>,
+    pub writes: Vec<u32>,
+    pub outside_writes: usize,
+}
+
+impl<C: PixelColor> Recorder<C> {
+    pub fn new(area: Rectangle) -> Self {
+        let n = area.size.width as usize * area.size.height as usize;
+        Self {
+            area,
+            colors: vec![None; n],
+            writes: vec![0; n],
+            outside_writes: 0,
+        }
+    }
+
+    fn index(&self, p: Point) -> Option<usize> {
+        window_contains(&self.area, p).then_some(())?;
+        let x = i64::from(p.x) - i64::from(self.area.top_left.x);
+        let y = i64::from(p.y) - i64::from(self.area.top_left.y);
+        Some((y * i64::from(self.area.size.width) + x) as usize)
+    }
+
+    pub fn get(&self, p: Point) -> Option<C> {
+        self.index(p).and_then(|i| self.colors[i])
+    }
+
+    pub fn writes_at(&self, p: Point) -> u32 {
+        self.index(p).map_or(0, |i| self.writes[i])
+    }
+
+    fn put(&mut self, p: Point, c: C) {
+        match self.index(p) {
+            Some(i) => {
+                self.colors[i] = Some(c);
+                self.writes[i] += 1;
+            }
+            None => self.outside_writes += 1,
+        }
+    }
+}
+
+impl<C: PixelColor> Dimensions for Recorder<C> {
+    fn bounding_box(&self) -> Rectangle {
+        self.area
+    }
+}
+
+impl<C: PixelColor> DrawTarget for Recorder<C> {
+    type Color = C;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(&mut self, pixels: I) -> Result<(), Infallible> {
+        for Pixel(p, c) in pixels {
+            self.put(p, c);
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
+        for (p, c) in window_points(area).zip(colors) {
+            self.put(p, c);
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,268 @@
+//! Plane equations of per-vertex attributes, in fixed point.
+
+use embedded_graphics::geometry::Point;
+
+/// Attribute gradients are kept to 2^-32 attribute units per pixel; values step at 2^-16.
+const SETUP_BITS: u32 = 32;
+const STEP_BITS: u32 = 16;
+
+/// Fixed-point planes of `N` per-vertex attributes over one triangle.
+///
+/// Attribute values are 16.16 fixed point, handled as raw two's complement bits with wrapping
+/// arithmetic, so signed (`I16F16`) and unsigned (`U16F16`) attributes share the code: only the
+/// true value of an attribute inside the triangle must fit 32 bits, not the intermediate terms.
+///
+/// [`Planes::at`] evaluates every plane at a pixel directly from the reference point, with the
+/// gradients rounded to 2^-32 per pixel, so rows never accumulate error. Along a span the values
+/// then step by [`Planes::step`] (2^-16 per pixel), additions only.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Planes<const N: usize> {
+    origin: Point,
+    /// Values at `origin`, in 2^-32 units.
+    base: [i64; N],
+    /// d/dx and d/dy in 2^-32 units per pixel (wrapping: only sums are meaningful).
+    dx: [i64; N],
+    dy: [i64; N],
+    /// d/dx in 2^-16 units per pixel, for stepping along a span.
+    pub(crate) step: [u32; N],
+}
+
+impl<const N: usize> Planes<N> {
+    /// Plane equations through `values` (raw 16.16, one array per vertex) at `vertices`, with
+    /// `bias` (raw 16.16) added to every value; `None` for degenerate triangles.
+    ///
+    /// `reference` is the point the evaluation distances are measured from: any pixel near the
+    /// area drawn (the clip window's corner, say). Triangles no larger than 2^15 pixels across
+    /// use their first vertex instead, which costs no division; larger ones evaluate the planes
+    /// exactly at the reference, so precision never depends on how far the vertices lie.
+    pub(crate) fn new(
+        vertices: [Point; 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+        let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
+        let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
+        let small = [ex1, ey1, ex2, ey2]
+            .iter()
+            .all(|d| d.unsigned_abs() < 1 << 15);
+        if small {
+            Self::new_small(vertices[0], values, bias, [ex1, ey1, ex2, ey2])
+        } else {
+            Self::new_exact(vertices, values, bias, reference)
+        }
+    }
+
+    /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
+    /// for all gradients, and the first vertex as reference, where values are exact.
+    #[inline]
+    fn new_small(origin: Point, values: [[i64; N]; 3], bias: i64, e: [i64; 4]) -> Option<Self> {
+        let [ex1, ey1, ex2, ey2] = e;
+        // |deltas| < 2^15: doubled area below 2^31, numerators below 2^49.
+        let area = ex1 * ey2 - ex2 * ey1;
+        if area == 0 {
+            return None;
+        }
+        // Gradient = numerator / area, to 2^-32: numerator * 2^16 (raw values carry 2^-16)
+        // times 2^62 / |area|, shifted down by 46. The reciprocal is below 2^62 and the
+        // products below 2^111.
+        let reciprocal = i128::from((1u64 << 62) / area.unsigned_abs());
+        let sign = area.signum();
+        let gradient = |numerator: i64| {
+            let scaled = (i128::from(numerator * sign) * reciprocal + (1 << 45)) >> 46;
+            // Only the low 64 bits matter: evaluation wraps, and true values fit.
+            scaled as i64
+        };
+        let mut planes = Self::empty(origin);
+        for k in 0..N {
+            let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
+            let (da1, da2) = (a1 - a0, a2 - a0);
+            planes.dx[k] = gradient(da1 * ey2 - da2 * ey1);
+            planes.dy[k] = gradient(da2 * ex1 - da1 * ex2);
+            planes.base[k] = (a0 + bias) << (SETUP_BITS - STEP_BITS);
+        }
+        planes.finish();
+        Some(planes)
+    }
+
+    /// Setup for any triangle: exact 128-bit arithmetic, values evaluated at `reference`.
+    #[cold]
+    #[inline(never)]
+    fn new_exact(
+        vertices: [Point; 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
+        let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
+        let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
+        // Deltas below 2^33, raw values below 2^34: every product below 2^100.
+        let area = ex1 * ey2 - ex2 * ey1;
+        if area == 0 {
+            return None;
+        }
+        let (rx, ry) = (
+            i128::from(reference.x) - p0.0,
+            i128::from(reference.y) - p0.1,
+        );
+        let scale = 1i128 << (SETUP_BITS - STEP_BITS);
+        let mut planes = Self::empty(reference);
+        for k in 0..N {
+            let (a0, a1, a2) = (
+                i128::from(values[0][k]),
+                i128::from(values[1][k]),
+                i128::from(values[2][k]),
+            );
+            let (da1, da2) = (a1 - a0, a2 - a0);
+            let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
+            planes.dx[k] = div_round(nx * scale, area) as i64;
+            planes.dy[k] = div_round(ny * scale, area) as i64;
+            let offset = div_round((nx * rx + ny * ry) * scale, area);
+            planes.base[k] = ((a0 + i128::from(bias)) * scale + offset) as i64;
+        }
+        planes.finish();
+        Some(planes)
+    }
+
+    fn empty(origin: Point) -> Self {
+        Self {
+            origin,
+            base: [0; N],
+            dx: [0; N],
+            dy: [0; N],
+            step: [0; N],
+        }
+    }
+
+    /// Derives the per-pixel steps from the gradients.
+    fn finish(&mut self) {
+        let half = 1i64 << (SETUP_BITS - STEP_BITS - 1);
+        for k in 0..N {
+            self.step[k] = (self.dx[k].wrapping_add(half) >> (SETUP_BITS - STEP_BITS)) as u32;
+        }
+    }
+
+    /// All values at pixel `(x, y)` in 2^-32 units (bias included).
+    #[inline(always)]
+    pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
+        let ddx = i64::from(x) - i64::from(self.origin.x);
+        let ddy = i64::from(y) - i64::from(self.origin.y);
+        let mut out = [0; N];
+        for k in 0..N {
+            out[k] = self.base[k]
+                .wrapping_add(self.dx[k].wrapping_mul(ddx))
+                .wrapping_add(self.dy[k].wrapping_mul(ddy));
+        }
+        out
+    }
+
+    /// Raw 16.16 values for stepping, from values in 2^-32 units.
+    #[inline(always)]
+    pub(crate) fn to_step_units(values: &[i64; N]) -> [u32; N] {
+        values.map(|v| (v >> (SETUP_BITS - STEP_BITS)) as u32)
+    }
+
+    /// All values at pixel `(x, y)`, raw 16.16 (bias included).
+    #[inline(always)]
+    pub(crate) fn at(&self, x: i32, y: i32) -> [u32; N] {
+        Self::to_step_units(&self.at_exact(x, y))
+    }
+}
+
+/// `numerator / denominator` rounded half up, for any signs.
+fn div_round(numerator: i128, denominator: i128) -> i128 {
+    let (n, d) = if denominator < 0 {
+        (-numerator, -denominator)
+    } else {
+        (numerator, denominator)
+    };
+    (2 * n + d).div_euclid(2 * d)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Exact value of the plane through three (x, y, a) points at (x, y), as a rational
+    /// `(numerator, positive denominator)`.
+    fn exact(v: [(i64, i64); 3], a: [i64; 3], x: i64, y: i64) -> (i128, i128) {
+        let v = v.map(|(x, y)| (i128::from(x), i128::from(y)));
+        let (x0, y0) = v[0];
+        let (ex1, ey1, ex2, ey2) = (v[1].0 - x0, v[1].1 - y0, v[2].0 - x0, v[2].1 - y0);
+        let area = ex1 * ey2 - ex2 * ey1;
+        let (da1, da2) = (i128::from(a[1] - a[0]), i128::from(a[2] - a[0]));
+        let nx = da1 * ey2 - da2 * ey1;
+        let ny = da2 * ex1 - da1 * ex2;
+        let num = i128::from(a[0]) * area + nx * (i128::from(x) - x0) + ny * (i128::from(y) - y0);
+        if area < 0 {
+            (-num, -area)
+        } else {
+            (num, area)
+        }
+    }
+
+    /// `got` (raw units) within one unit of `num / den`.
+    fn close(got: u32, (num, den): (i128, i128)) -> bool {
+        (i128::from(got as i32) * den - num).abs() <= den
+    }
+
+    #[test]
+    fn small_and_exact_setups_agree_with_the_plane() {
+        type Case = ([(i32, i32); 3], [i64; 3]);
+        let cases: [Case; 4] = [
+            ([(0, 0), (10, 0), (0, 10)], [0, 255 << 16, 100 << 16]),
+            ([(3, 7), (200, 40), (50, 230)], [31 << 16, 0, 17 << 16]),
+            (
+                [(-5, 2), (9, -30), (14, 22)],
+                [-(3 << 16), 20_000 << 16, 1 << 15],
+            ),
+            ([(0, 0), (30_000, 1), (1, 30_000)], [0, 30_000 << 16, 0]),
+        ];
+        for (v, a) in cases {
+            let vertices = v.map(|(x, y)| Point::new(x, y));
+            let values = a.map(|a| [a]);
+            let small = Planes::<1>::new(vertices, values, 0, Point::zero()).unwrap();
+            let exact_setup =
+                Planes::<1>::new_exact(vertices, values, 0, Point::new(7, 9)).unwrap();
+            let vf = v.map(|(x, y)| (i64::from(x), i64::from(y)));
+            for (x, y) in [(0, 0), (5, 5), (40, 20), (100, 100), (-3, 8)] {
+                let want = exact(vf, a, x, y);
+                for planes in [small, exact_setup] {
+                    let got = planes.at(x as i32, y as i32)[0];
+                    assert!(close(got, want), "{v:?} at ({x},{y}): {got} vs {want:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn huge_triangles_evaluate_exactly_at_the_reference() {
+        let vertices = [
+            Point::new(i32::MIN, i32::MIN),
+            Point::new(i32::MAX, 0),
+            Point::new(0, i32::MAX),
+        ];
+        let values = [[0], [200 << 16], [100 << 16]];
+        let planes = Planes::<1>::new(vertices, values, 0, Point::new(10, 10)).unwrap();
+        let v = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+        for (x, y) in [(10, 10), (11, 10), (300, 200)] {
+            let want = exact(v, [0, 200 << 16, 100 << 16], x, y);
+            let got = planes.at(x as i32, y as i32)[0];
+            assert!(close(got, want), "({x},{y}): {got} vs {want:?}");
+        }
+    }
+
+    #[test]
+    fn degenerate_is_none() {
+        let v = [Point::new(0, 0), Point::new(5, 5), Point::new(10, 10)];
+        assert!(Planes::<2>::new(v, [[0, 0], [1, 1], [2, 2]], 0, Point::zero()).is_none());
+        let far = [
+            Point::new(0, 0),
+            Point::new(1 << 20, 1 << 20),
+            Point::new(1 << 21, 1 << 21),
+        ];
+        assert!(Planes::<1>::new(far, [[0], [1], [2]], 0, Point::zero()).is_none());
+    }
+}

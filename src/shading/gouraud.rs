@@ -1,0 +1,280 @@
+//! Gouraud shading: colours interpolated between the vertices.
+
+use embedded_graphics::{
+    draw_target::DrawTarget,
+    geometry::{Dimensions, Point},
+    pixelcolor::{
+        Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, PixelColor,
+        Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
+    },
+    primitives::{Rectangle, StyledDimensions, StyledDrawable},
+};
+
+use super::spans::draw_shaded;
+use crate::{coverage::FillRule, geometry::Triangle};
+
+/// Colours whose channels Gouraud shading interpolates, each in its own range (0..=31 for the
+/// red channel of `Rgb565`, 0..=3 for `Gray2`, 0..=1 for `BinaryColor`, ...).
+///
+/// Implemented for every colour type of embedded-graphics: `Rgb555`, `Rgb565`, `Rgb666`,
+/// `Rgb888`, their `Bgr` variants, `Gray2`, `Gray4`, `Gray8` and `BinaryColor`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Gray4, GrayColor, Rgb565};
+/// use trirast::shading::GouraudColor;
+///
+/// assert_eq!(Rgb565::new(31, 40, 2).channels(), [31, 40, 2]);
+/// assert_eq!(Gray4::from_channels([9]), Gray4::new(9));
+/// ```
+pub trait GouraudColor: PixelColor {
+    /// The channel values: `[u8; 3]` (red, green, blue) or `[u8; 1]` (luma).
+    type Channels: Copy;
+
+    /// The channel values of a colour.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use trirast::shading::GouraudColor;
+    ///
+    /// assert_eq!(BinaryColor::On.channels(), [1]);
+    /// ```
+    fn channels(self) -> Self::Channels;
+
+    /// The colour with these channel values (out-of-range bits are dropped).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+    /// use trirast::shading::GouraudColor;
+    ///
+    /// assert_eq!(Rgb888::from_channels([255, 0, 0]), Rgb888::RED);
+    /// ```
+    fn from_channels(channels: Self::Channels) -> Self;
+}
+
+macro_rules! rgb_gouraud {
+    ($($color:ty),+) => {$(
+        impl GouraudColor for $color {
+            type Channels = [u8; 3];
+
+            #[inline(always)]
+            fn channels(self) -> [u8; 3] {
+                [self.r(), self.g(), self.b()]
+            }
+
+            #[inline(always)]
+            fn from_channels([r, g, b]: [u8; 3]) -> Self {
+                Self::new(r, g, b)
+            }
+        }
+    )+};
+}
+
+rgb_gouraud!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
+
+macro_rules! gray_gouraud {
+    ($($color:ty),+) => {$(
+        impl GouraudColor for $color {
+            type Channels = [u8; 1];
+
+            #[inline(always)]
+            fn channels(self) -> [u8; 1] {
+                [self.luma()]
+            }
+
+            #[inline(always)]
+            fn from_channels([luma]: [u8; 1]) -> Self {
+                Self::new(luma)
+            }
+        }
+    )+};
+}
+
+gray_gouraud!(Gray2, Gray4, Gray8);
+
+impl GouraudColor for BinaryColor {
+    type Channels = [u8; 1];
+
+    #[inline(always)]
+    fn channels(self) -> [u8; 1] {
+        [u8::from(self.is_on())]
+    }
+
+    #[inline(always)]
+    fn from_channels([on]: [u8; 1]) -> Self {
+        if on & 1 == 1 {
+            BinaryColor::On
+        } else {
+            BinaryColor::Off
+        }
+    }
+}
+
+/// Fills a triangle with colours interpolated between its vertices.
+///
+/// Each channel is interpolated in its colour type's own range with 16 fraction bits, from the
+/// plane through the three vertex colours, and rounded to the nearest value (or dithered, see
+/// [`GouraudStyle::with_dither`]). A triangle whose vertices share a colour is filled with
+/// exactly that colour, and a vertex pixel gets exactly its vertex's colour. Each covered row
+/// goes to the target as one `fill_contiguous` call.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+/// use trirast::{Framebuffer, GouraudStyle, Triangle};
+///
+/// let mut pixels = [Rgb565::BLACK; 64 * 64];
+/// let mut display = Framebuffer::new(&mut pixels, 64, 64)?;
+/// Triangle::new(Point::new(0, 0), Point::new(63, 0), Point::new(0, 63))
+///     .into_styled(GouraudStyle::new([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE]))
+///     .draw(&mut display)
+///     .unwrap();
+/// assert_eq!(display.pixel(Point::new(0, 0)), Some(Rgb565::RED));
+/// // Halfway along the top edge: 32/63 of red (31), 31/63 of green (63), rounded.
+/// assert_eq!(display.pixel(Point::new(31, 0)), Some(Rgb565::new(16, 31, 0)));
+/// # Ok::<(), trirast::Error>(())
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub struct GouraudStyle<C> {
+    /// The colour at each vertex, in the triangle's vertex order.
+    pub colors: [C; 3],
+    /// Which boundary pixels belong to the triangle; [`FillRule::TopLeft`] by default.
+    pub fill_rule: FillRule,
+    /// Ordered (4x4 Bayer) dithering instead of rounding; off by default.
+    pub dither: bool,
+}
+
+impl<C> GouraudStyle<C> {
+    /// A style interpolating between `colors`, one per vertex in the triangle's vertex order.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use trirast::GouraudStyle;
+    ///
+    /// const FADE: GouraudStyle<Gray8> = GouraudStyle::new([Gray8::new(0), Gray8::new(128), Gray8::new(255)]);
+    /// assert!(!FADE.dither);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(colors: [C; 3]) -> Self {
+        Self {
+            colors,
+            fill_rule: FillRule::TopLeft,
+            dither: false,
+        }
+    }
+
+    /// The same style with another fill rule.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use trirast::{FillRule, GouraudStyle};
+    ///
+    /// let s = GouraudStyle::new([BinaryColor::On; 3]).with_fill_rule(FillRule::Inclusive);
+    /// assert_eq!(s.fill_rule, FillRule::Inclusive);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_fill_rule(mut self, fill_rule: FillRule) -> Self {
+        self.fill_rule = fill_rule;
+        self
+    }
+
+    /// The same style with ordered dithering on or off.
+    ///
+    /// Dithering spreads the fraction of each interpolated channel over a 4x4 Bayer pattern,
+    /// so gradients between few levels stay visible: on a monochrome (`BinaryColor`) display
+    /// a fade from off to on becomes a graded stipple instead of a hard edge, and `Gray2`,
+    /// `Gray4` or `Rgb565` gradients lose their banding. Every fraction of a level is shown by
+    /// exactly that share of pixels in each 4x4 block (to 1/16).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+    /// use trirast::{GouraudStyle, Triangle};
+    ///
+    /// let style = GouraudStyle::new([BinaryColor::Off, BinaryColor::On, BinaryColor::Off]).with_dither(true);
+    /// let mut display = MockDisplay::new();
+    /// Triangle::new(Point::new(0, 0), Point::new(60, 30), Point::new(0, 60))
+    ///     .into_styled(style)
+    ///     .draw(&mut display)?;
+    /// // Some pixels on, some off, more on towards the bright vertex.
+    /// let on = |x0: i32| (x0..x0 + 8).filter(|&x| display.get_pixel(Point::new(x, 30)) == Some(BinaryColor::On)).count();
+    /// assert!(on(4) < on(40));
+    /// # Ok::<(), core::convert::Infallible>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_dither(mut self, dither: bool) -> Self {
+        self.dither = dither;
+        self
+    }
+}
+
+/// Thresholds of the 4x4 Bayer matrix, as 16.16 fractions `(2t + 1) / 32`.
+const BAYER: [[u32; 4]; 4] = {
+    let order = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+    let mut table = [[0; 4]; 4];
+    let mut y = 0;
+    while y < 4 {
+        let mut x = 0;
+        while x < 4 {
+            table[y][x] = (2 * order[y][x] + 1) << 11;
+            x += 1;
+        }
+        y += 1;
+    }
+    table
+};
+
+impl<C, const N: usize> StyledDrawable<GouraudStyle<C>> for Triangle
+where
+    C: GouraudColor<Channels = [u8; N]>,
+{
+    type Color = C;
+    type Output = ();
+
+    #[inline]
+    fn draw_styled<D>(&self, style: &GouraudStyle<C>, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let values = style
+            .colors
+            .map(|c| c.channels().map(|v| i64::from(v) << 16));
+        let rule = style.fill_rule;
+        if style.dither {
+            draw_shaded(self, rule, values, 0, target, |p: Point, v: [u32; N]| {
+                let threshold = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
+                C::from_channels(v.map(|c| (c.wrapping_add(threshold) >> 16) as u8))
+            })
+        } else {
+            // Half a level of bias turns truncation into rounding to nearest.
+            draw_shaded(
+                self,
+                rule,
+                values,
+                1 << 15,
+                target,
+                |_: Point, v: [u32; N]| C::from_channels(v.map(|c| (c >> 16) as u8)),
+            )
+        }
+    }
+}
+
+impl<C: GouraudColor> StyledDimensions<GouraudStyle<C>> for Triangle {
+    fn styled_bounding_box(&self, _style: &GouraudStyle<C>) -> Rectangle {
+        self.bounding_box()
+    }
+}

@@ -1,0 +1,272 @@
+//! Gouraud shading against exact rational interpolation, computed in `i128` here: every channel
+//! within one level of the exact value rounded, exact for constant colours and at vertices, the
+//! same coverage as flat filling, watertight meshes, and dithering that follows the exact value.
+#![allow(clippy::needless_range_loop)] // parallel channel arrays read best indexed
+
+mod common;
+
+use common::{
+    exact_plane, reference_covers, reference_pixels, round_half_up, window_points, CountingTarget,
+    Offset, Recorder, Rng, Rule,
+};
+use embedded_graphics::{
+    pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb888, RgbColor},
+    prelude::*,
+    primitives::Rectangle,
+};
+use proptest::prelude::*;
+use trirast::{shading::GouraudColor, FillRule, FlatStyle, GouraudStyle, Triangle};
+
+/// Exact channel value at `p`, rounded half up.
+fn exact_channel(v: [Point; 3], channel: [u8; 3], p: Point) -> i128 {
+    let (num, den) = exact_plane(v, channel.map(i64::from), p).unwrap();
+    round_half_up(num, den)
+}
+
+/// Draws with Gouraud shading into a recorder over `window` and checks every pixel: drawn
+/// exactly where the reference says, once, each channel within `tolerance` of exact.
+fn check_gouraud<C>(
+    v: [Point; 3],
+    colors: [C; 3],
+    window: Rectangle,
+    rule: Rule,
+    tolerance: i128,
+) -> Result<(), TestCaseError>
+where
+    C: GouraudColor<Channels = [u8; 3]> + core::fmt::Debug,
+{
+    let mut target = Recorder::<C>::new(window);
+    Triangle { vertices: v }
+        .into_styled(GouraudStyle::new(colors).with_fill_rule(rule.to_crate()))
+        .draw(&mut target)
+        .unwrap();
+    prop_assert_eq!(target.outside_writes, 0);
+    let channels = colors.map(|c| c.channels());
+    for p in window_points(&window) {
+        let covered = reference_covers(v, p, rule);
+        prop_assert_eq!(
+            target.writes_at(p),
+            u32::from(covered),
+            "coverage at {:?}",
+            p
+        );
+        if let Some(c) = target.get(p) {
+            let got = c.channels();
+            for k in 0..3 {
+                let want = exact_channel(v, [channels[0][k], channels[1][k], channels[2][k]], p);
+                let diff = (i128::from(got[k]) - want).abs();
+                prop_assert!(
+                    diff <= tolerance,
+                    "channel {} at {:?}: got {}, exact {} ({:?}, {:?})",
+                    k,
+                    p,
+                    got[k],
+                    want,
+                    v,
+                    colors
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+fn rgb888() -> impl Strategy<Value = Rgb888> {
+    any::<[u8; 3]>().prop_map(|[r, g, b]| Rgb888::new(r, g, b))
+}
+
+fn rgb565() -> impl Strategy<Value = Rgb565> {
+    (0..32u8, 0..64u8, 0..32u8).prop_map(|(r, g, b)| Rgb565::new(r, g, b))
+}
+
+/// Triangles up to 320x240 and beyond, often reaching past the window.
+fn triangle() -> impl Strategy<Value = [Point; 3]> {
+    let coord = prop_oneof![
+        3 => (-40..360i32, -40..280i32),
+        1 => (-3000..3000i32, -3000..3000i32),
+        1 => (0..24i32, 0..24i32),
+    ];
+    [coord.clone(), coord.clone(), coord].prop_map(|c| c.map(|(x, y)| Point::new(x, y)))
+}
+
+fn window() -> impl Strategy<Value = Rectangle> {
+    (-20..300i32, -20..220i32, 1..48u32, 1..40u32)
+        .prop_map(|(x, y, w, h)| Rectangle::new(Point::new(x, y), Size::new(w, h)))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(5_000))]
+
+    /// 8-bit channels: within one level of the exact rational value, rounded.
+    #[test]
+    fn rgb888_within_one_level_of_exact(v in triangle(), colors in [rgb888(), rgb888(), rgb888()], window in window()) {
+        check_gouraud(v, colors, window, Rule::TopLeft, 1)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1_500))]
+
+    /// 5- and 6-bit channels, each in its own range.
+    #[test]
+    fn rgb565_within_one_level_of_exact(v in triangle(), colors in [rgb565(), rgb565(), rgb565()], window in window(),
+                                        inclusive in any::<bool>()) {
+        let rule = if inclusive { Rule::Inclusive } else { Rule::TopLeft };
+        check_gouraud(v, colors, window, rule, 1)?;
+    }
+
+    /// One colour at all vertices: exactly that colour everywhere, for every colour type.
+    #[test]
+    fn constant_colour_is_exact(v in triangle(), c in rgb888(), luma in any::<u8>(), window in window()) {
+        let covered = reference_pixels(v, &window, Rule::TopLeft);
+        let mut rgb = Recorder::<Rgb888>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new([c; 3])).draw(&mut rgb).unwrap();
+        let c565 = Rgb565::new(c.r() >> 3, c.g() >> 2, c.b() >> 3);
+        let mut rgb565 = Recorder::<Rgb565>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new([c565; 3])).draw(&mut rgb565).unwrap();
+        let mut gray = Recorder::<Gray8>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new([Gray8::new(luma); 3])).draw(&mut gray).unwrap();
+        let mut gray2 = Recorder::<Gray2>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new([Gray2::new(luma & 3); 3])).draw(&mut gray2).unwrap();
+        let on = if luma & 1 == 1 { BinaryColor::On } else { BinaryColor::Off };
+        let mut binary = Recorder::<BinaryColor>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new([on; 3]).with_dither(true)).draw(&mut binary).unwrap();
+        for p in covered {
+            prop_assert_eq!(rgb.get(p), Some(c));
+            prop_assert_eq!(rgb565.get(p), Some(c565));
+            prop_assert_eq!(gray.get(p), Some(Gray8::new(luma)));
+            prop_assert_eq!(gray2.get(p), Some(Gray2::new(luma & 3)));
+            prop_assert_eq!(binary.get(p), Some(on));
+        }
+    }
+
+    /// A vertex pixel gets exactly its vertex's colour (the inclusive rule draws all three).
+    #[test]
+    fn vertices_get_their_colour(v in triangle(), colors in [rgb888(), rgb888(), rgb888()]) {
+        prop_assume!(Triangle { vertices: v }.orientation() != trirast::Orientation::Degenerate);
+        for (i, &vertex) in v.iter().enumerate() {
+            let window = Rectangle::new(vertex - Point::new(1, 1), Size::new(3, 3));
+            let mut target = Recorder::<Rgb888>::new(window);
+            Triangle { vertices: v }
+                .into_styled(GouraudStyle::new(colors).with_fill_rule(FillRule::Inclusive))
+                .draw(&mut target)
+                .unwrap();
+            prop_assert_eq!(target.get(vertex), Some(colors[i]), "vertex {} of {:?}", i, v);
+        }
+    }
+
+    /// Gray types interpolate their single channel in its own range.
+    #[test]
+    fn gray_within_one_level(v in triangle(), l in [any::<u8>(), any::<u8>(), any::<u8>()], window in window()) {
+        let mut g8 = Recorder::<Gray8>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(l.map(Gray8::new))).draw(&mut g8).unwrap();
+        let l4 = l.map(|x| x >> 4);
+        let mut g4 = Recorder::<Gray4>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(l4.map(Gray4::new))).draw(&mut g4).unwrap();
+        for p in window_points(&window) {
+            if let Some(c) = g8.get(p) {
+                prop_assert!((i128::from(c.luma()) - exact_channel(v, l, p)).abs() <= 1);
+            }
+            if let Some(c) = g4.get(p) {
+                prop_assert!((i128::from(c.luma()) - exact_channel(v, l4, p)).abs() <= 1);
+            }
+        }
+    }
+
+    /// Dithering: each pixel is on exactly when the exact value plus its Bayer threshold
+    /// reaches one, except where the two are within rounding distance.
+    #[test]
+    fn dither_follows_the_exact_value(v in triangle(), on in [any::<bool>(), any::<bool>(), any::<bool>()], window in window()) {
+        let colors = on.map(|b| if b { BinaryColor::On } else { BinaryColor::Off });
+        let mut target = Recorder::<BinaryColor>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(colors).with_dither(true)).draw(&mut target).unwrap();
+        const BAYER: [[i128; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+        for p in window_points(&window) {
+            let Some(c) = target.get(p) else { continue };
+            let (num, den) = exact_plane(v, on.map(i64::from), p).unwrap();
+            // value + (2t + 1) / 32 >= 1  <=>  32 num + (2t + 1) den >= 32 den
+            let t = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
+            let margin = 32 * num + (2 * t + 1) * den - 32 * den;
+            if margin.abs() * 1024 > 32 * den {
+                prop_assert_eq!(c == BinaryColor::On, margin >= 0, "{:?} at {:?}", v, p);
+            }
+        }
+    }
+
+    /// Shading changes colours, never coverage.
+    #[test]
+    fn same_coverage_as_flat(v in triangle(), window in window(), inclusive in any::<bool>()) {
+        let rule = if inclusive { FillRule::Inclusive } else { FillRule::TopLeft };
+        let mut flat = Recorder::<Rgb565>::new(window);
+        Triangle { vertices: v }.into_styled(FlatStyle::new(Rgb565::RED).with_fill_rule(rule)).draw(&mut flat).unwrap();
+        let mut shaded = Recorder::<Rgb565>::new(window);
+        let colors = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE];
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(colors).with_fill_rule(rule).with_dither(inclusive)).draw(&mut shaded).unwrap();
+        prop_assert_eq!(&flat.writes, &shaded.writes);
+    }
+}
+
+/// A shaded mesh still covers every pixel exactly once.
+#[test]
+fn shaded_mesh_is_watertight() {
+    let mut rng = Rng(99);
+    let window = Rectangle::new(Point::new(0, 0), Size::new(120, 90));
+    for _ in 0..30 {
+        let (nx, ny) = (rng.range(2, 10), rng.range(2, 9));
+        let mut pts = Vec::new();
+        for j in 0..=ny {
+            for i in 0..=nx {
+                let jitter = |r: &mut Rng, edge: bool| if edge { 0 } else { r.range(-2, 2) };
+                pts.push(Point::new(
+                    120 * i / nx + jitter(&mut rng, i == 0 || i == nx),
+                    90 * j / ny + jitter(&mut rng, j == 0 || j == ny),
+                ));
+            }
+        }
+        let at = |i: i32, j: i32| pts[(j * (nx + 1) + i) as usize];
+        let mut target = Offset(CountingTarget::new(window));
+        let mut colors = Recorder::<Rgb888>::new(window);
+        for j in 0..ny {
+            for i in 0..nx {
+                for t in [
+                    [at(i, j), at(i + 1, j), at(i + 1, j + 1)],
+                    [at(i, j), at(i + 1, j + 1), at(i, j + 1)],
+                ] {
+                    let style = GouraudStyle::new([Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE]);
+                    Triangle { vertices: t }
+                        .into_styled(style)
+                        .draw(&mut colors)
+                        .unwrap();
+                    Triangle { vertices: t }
+                        .into_styled(GouraudStyle::new([
+                            BinaryColor::On,
+                            BinaryColor::Off,
+                            BinaryColor::On,
+                        ]))
+                        .draw(&mut target)
+                        .unwrap();
+                }
+            }
+        }
+        assert!(target.0.hits.iter().all(|&h| h == 1), "every pixel once");
+        assert!(colors.writes.iter().all(|&h| h == 1), "every pixel once");
+    }
+}
+
+/// The hand-checked example from the docs, on a 64x64 display.
+#[test]
+fn documented_gradient() {
+    let mut rec = Recorder::<Rgb565>::new(Rectangle::new(Point::zero(), Size::new(64, 64)));
+    Triangle::new(Point::new(0, 0), Point::new(63, 0), Point::new(0, 63))
+        .into_styled(GouraudStyle::new([
+            Rgb565::RED,
+            Rgb565::GREEN,
+            Rgb565::BLUE,
+        ]))
+        .draw(&mut rec)
+        .unwrap();
+    // Halfway along the top edge: half red (31 -> 15.5 -> 16?), half green (63 -> 31.5).
+    // Exact: r = 31 * 32/63 = 15.746 -> 16; g = 63 * 31/63 = 31; at x = 31.
+    assert_eq!(rec.get(Point::new(31, 0)), Some(Rgb565::new(16, 31, 0)));
+    assert_eq!(rec.get(Point::new(0, 0)), Some(Rgb565::RED));
+}
