@@ -12,13 +12,16 @@ use std::{path::PathBuf, time::Instant};
 
 use embedded_graphics::{
     mono_font::{ascii::FONT_6X10, MonoTextStyle},
-    pixelcolor::{BinaryColor, Rgb565, Rgb888},
+    pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb888},
     prelude::*,
     primitives::{PrimitiveStyle, Triangle as EgTriangle},
     text::Text,
 };
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay};
-use trirast::{FillRule, FlatStyle, Triangle};
+use fixed::types::I16F16;
+use trirast::{
+    shading::Fragment, FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, Triangle,
+};
 
 /// One picture: a name, what it shows, and how to draw it.
 struct Scene {
@@ -42,6 +45,21 @@ const SCENES: &[Scene] = &[
         name: "fan",
         about: "a 48-triangle fan: every pixel drawn once, the centre by exactly one triangle",
         render: fan,
+    },
+    Scene {
+        name: "gouraud_rgb565",
+        about: "Gouraud shading in Rgb565: a colour wheel of 24 triangles",
+        render: gouraud_rgb565,
+    },
+    Scene {
+        name: "gouraud_gray",
+        about: "the same fade in Gray8, Gray4, Gray2 and dithered BinaryColor (left to right)",
+        render: gouraud_gray,
+    },
+    Scene {
+        name: "shader",
+        about: "a user shader: per-vertex light intensity and a procedural checker",
+        render: shader,
     },
     Scene {
         name: "overdraw",
@@ -148,6 +166,153 @@ fn fan() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
             .draw(&mut display)
             .unwrap();
     }
+    (display, OutputSettingsBuilder::new().scale(2).build())
+}
+
+/// A wheel of triangles around a white centre, each rim vertex a hue.
+fn gouraud_rgb565() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let mut fb_pixels = vec![Rgb565::BLACK; 160 * 160];
+    let mut fb = Framebuffer::new(&mut fb_pixels, 160, 160).unwrap();
+    let center = Point::new(80, 80);
+    let n = 24;
+    let hue = |i: usize| -> Rgb565 {
+        // A hue wheel from six corners, without floats: red, yellow, green, cyan, blue, magenta.
+        let corners = [
+            (31, 0, 0),
+            (31, 63, 0),
+            (0, 63, 0),
+            (0, 63, 31),
+            (0, 0, 31),
+            (31, 0, 31),
+        ];
+        let (a, b) = (corners[(i * 6 / n) % 6], corners[(i * 6 / n + 1) % 6]);
+        let t = (i * 6 % n) as u32;
+        let mix =
+            |x: u8, y: u8| ((u32::from(x) * (n as u32 - t) + u32::from(y) * t) / n as u32) as u8;
+        Rgb565::new(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+    };
+    let ring: Vec<Point> = (0..n)
+        .map(|i| {
+            let t = i as f64 / n as f64 * std::f64::consts::TAU;
+            center
+                + Point::new(
+                    (76.0 * t.cos()).round() as i32,
+                    (76.0 * t.sin()).round() as i32,
+                )
+        })
+        .collect();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        Triangle::new(center, ring[i], ring[j])
+            .into_styled(GouraudStyle::new([Rgb565::WHITE, hue(i), hue(j)]))
+            .draw(&mut fb)
+            .unwrap();
+    }
+    let mut display = SimulatorDisplay::new(Size::new(160, 160));
+    for (i, c) in fb_pixels.iter().enumerate() {
+        Pixel(Point::new(i as i32 % 160, i as i32 / 160), to_888(*c))
+            .draw(&mut display)
+            .unwrap();
+    }
+    (display, OutputSettingsBuilder::new().scale(2).build())
+}
+
+/// One fade from black to white, rendered in four colour depths.
+fn gouraud_gray() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (64, 96);
+    let mut display = SimulatorDisplay::new(Size::new(4 * w + 12, h));
+    let p = Point::new;
+    let tri = |x0: i32| {
+        [
+            Triangle::new(p(x0, 0), p(x0 + w as i32, 0), p(x0, h as i32)),
+            Triangle::new(
+                p(x0 + w as i32, 0),
+                p(x0 + w as i32, h as i32),
+                p(x0, h as i32),
+            ),
+        ]
+    };
+    let blit = |display: &mut SimulatorDisplay<Rgb888>, x0: i32, luma: &dyn Fn(Point) -> u8| {
+        for y in 0..h as i32 {
+            for x in x0..x0 + w as i32 {
+                let l = luma(p(x, y));
+                Pixel(p(x, y), Rgb888::new(l, l, l)).draw(display).unwrap();
+            }
+        }
+    };
+    for (panel, depth) in [(0, 8u8), (1, 4), (2, 2), (3, 1)] {
+        let x0 = panel * (w as i32 + 4);
+        let mut g8 = SimulatorDisplay::<Gray8>::new(Size::new(4 * w + 12, h));
+        let mut g4 = SimulatorDisplay::<Gray4>::new(Size::new(4 * w + 12, h));
+        let mut g2 = SimulatorDisplay::<Gray2>::new(Size::new(4 * w + 12, h));
+        let mut bin = SimulatorDisplay::<BinaryColor>::new(Size::new(4 * w + 12, h));
+        for (k, t) in tri(x0).into_iter().enumerate() {
+            // Dark on the left, bright on the right.
+            let levels = |max: u8| if k == 0 { [0, max, 0] } else { [max, max, 0] };
+            match depth {
+                8 => t
+                    .into_styled(GouraudStyle::new(levels(255).map(Gray8::new)))
+                    .draw(&mut g8)
+                    .unwrap(),
+                4 => t
+                    .into_styled(GouraudStyle::new(levels(15).map(Gray4::new)))
+                    .draw(&mut g4)
+                    .unwrap(),
+                2 => t
+                    .into_styled(GouraudStyle::new(levels(3).map(Gray2::new)))
+                    .draw(&mut g2)
+                    .unwrap(),
+                _ => {
+                    let on = levels(1).map(|v| {
+                        if v == 1 {
+                            BinaryColor::On
+                        } else {
+                            BinaryColor::Off
+                        }
+                    });
+                    t.into_styled(GouraudStyle::new(on).with_dither(true))
+                        .draw(&mut bin)
+                        .unwrap()
+                }
+            }
+        }
+        match depth {
+            8 => blit(&mut display, x0, &|q| g8.get_pixel(q).luma()),
+            4 => blit(&mut display, x0, &|q| g4.get_pixel(q).luma() * 17),
+            2 => blit(&mut display, x0, &|q| g2.get_pixel(q).luma() * 85),
+            _ => blit(&mut display, x0, &|q| {
+                if bin.get_pixel(q).is_on() {
+                    255
+                } else {
+                    0
+                }
+            }),
+        }
+    }
+    (display, OutputSettingsBuilder::new().scale(2).build())
+}
+
+/// A shader with two attributes: light intensity per vertex, and texture-like coordinates for a
+/// procedural checkerboard.
+fn shader() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let mut display = SimulatorDisplay::new(Size::new(160, 120));
+    let f = |v: f64| I16F16::from_num(v);
+    let attributes = [
+        [f(1.0), f(0.0), f(0.0)],
+        [f(0.3), f(8.0), f(0.0)],
+        [f(0.6), f(0.0), f(6.0)],
+    ];
+    let style = ShaderStyle::new(attributes, |frag: Fragment<3>| {
+        let [light, u, v] = frag.values;
+        let check = (u.to_num::<i32>() + v.to_num::<i32>()) & 1 == 0;
+        let base: u8 = if check { 230 } else { 90 };
+        let level = (light * I16F16::from_num(base)).to_num::<u8>();
+        Rgb888::new(level, level / 2 + 20, 255 - level)
+    });
+    Triangle::new(Point::new(10, 8), Point::new(150, 30), Point::new(40, 112))
+        .into_styled(style)
+        .draw(&mut display)
+        .unwrap();
     (display, OutputSettingsBuilder::new().scale(2).build())
 }
 

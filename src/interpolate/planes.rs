@@ -35,6 +35,7 @@ impl<const N: usize> Planes<N> {
     /// area drawn (the clip window's corner, say). Triangles no larger than 2^15 pixels across
     /// use their first vertex instead, which costs no division; larger ones evaluate the planes
     /// exactly at the reference, so precision never depends on how far the vertices lie.
+    #[inline(always)]
     pub(crate) fn new(
         vertices: [Point; 3],
         values: [[i64; N]; 3],
@@ -56,7 +57,7 @@ impl<const N: usize> Planes<N> {
 
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
     /// for all gradients, and the first vertex as reference, where values are exact.
-    #[inline]
+    #[inline(always)]
     fn new_small(origin: Point, values: [[i64; N]; 3], bias: i64, e: [i64; 4]) -> Option<Self> {
         let [ex1, ey1, ex2, ey2] = e;
         // |deltas| < 2^15: doubled area below 2^31, numerators below 2^49.
@@ -126,6 +127,7 @@ impl<const N: usize> Planes<N> {
         Some(planes)
     }
 
+    #[inline(always)]
     fn empty(origin: Point) -> Self {
         Self {
             origin,
@@ -137,6 +139,7 @@ impl<const N: usize> Planes<N> {
     }
 
     /// Derives the per-pixel steps from the gradients.
+    #[inline(always)]
     fn finish(&mut self) {
         let half = 1i64 << (SETUP_BITS - STEP_BITS - 1);
         for k in 0..N {
