@@ -134,7 +134,8 @@ fn main() -> ExitCode {
     if !MODES.contains(&mode.as_str()) {
         return usage();
     }
-    let scene = scene_kind.build();
+    let mut scene = Vec::new();
+    scene_kind.for_each(|t| scene.push(t));
     let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
     let mut fb = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).expect("buffer sized for the screen");
 

@@ -135,13 +135,13 @@ fn to_888(c: Rgb565) -> Rgb888 {
 
 fn mesh() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let mut display = SimulatorDisplay::new(Size::new(scenes::WIDTH, scenes::HEIGHT));
-    for t in scenes::Scene::Mesh.build() {
+    scenes::Scene::Mesh.for_each(|t| {
         let [a, b, c] = t.vertices;
         Triangle::new(a, b, c)
             .into_styled(FlatStyle::new(to_888(t.color)))
             .draw(&mut display)
             .unwrap();
-    }
+    });
     (display, OutputSettingsBuilder::new().scale(2).build())
 }
 
@@ -320,7 +320,8 @@ fn shader() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
 /// black = never (a gap), grey = once, red = twice or more.
 fn overdraw() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let (w, h) = (120u32, 90u32);
-    let tris: Vec<[Point; 3]> = scenes::mesh(12, 9).iter().map(|t| t.vertices).collect();
+    let mut tris: Vec<[Point; 3]> = Vec::new();
+    scenes::mesh(12, 9, |t| tris.push(t.vertices));
     let mut display = SimulatorDisplay::new(Size::new(w * 2 + 8, h + 14));
     for (panel, eg) in [(0, false), (1, true)] {
         let mut counts = Counter {

@@ -1,14 +1,15 @@
-//! Seeded, deterministic benchmark and demo scenes at 320x240 (shared by the examples).
+//! Seeded, deterministic benchmark and demo scenes at 320x240, generated without allocation so
+//! that the firmware example renders the very same triangles as the host.
 #![allow(dead_code)]
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 
-/// Screen size of every scene.
+/// Screen width of every scene.
 pub const WIDTH: u32 = 320;
-/// Screen size of every scene.
+/// Screen height of every scene.
 pub const HEIGHT: u32 = 240;
 
-/// A triangle with a flat colour and per-vertex colours (later modes use both).
+/// A triangle with a flat colour and per-vertex colours (modes use one or the other).
 #[derive(Copy, Clone, Debug)]
 pub struct SceneTriangle {
     pub vertices: [Point; 3],
@@ -28,7 +29,7 @@ impl Rng {
         z ^ (z >> 31)
     }
 
-    /// Uniform in `lo..=hi`.
+    /// Uniform in `lo..=hi` (up to a negligible bias).
     pub fn range(&mut self, lo: i32, hi: i32) -> i32 {
         let span = (i64::from(hi) - i64::from(lo) + 1) as u64;
         (i64::from(lo) + (self.next_u64() % span) as i64) as i32
@@ -83,77 +84,73 @@ impl Scene {
         }
     }
 
-    pub fn build(self) -> Vec<SceneTriangle> {
+    /// Calls `f` with every triangle of the scene, in drawing order.
+    pub fn for_each(self, f: impl FnMut(SceneTriangle)) {
         match self {
-            Scene::Big => big(),
-            Scene::Small => small(),
-            Scene::Mesh => mesh(40, 25),
+            Scene::Big => big(f),
+            Scene::Small => small(f),
+            Scene::Mesh => mesh(40, 25, f),
         }
     }
 }
 
-fn big() -> Vec<SceneTriangle> {
+fn big(mut f: impl FnMut(SceneTriangle)) {
     let mut rng = Rng(0xB16);
-    (0..40)
-        .map(|_| {
-            let c = Point::new(rng.range(40, 280), rng.range(30, 210));
-            let mut p = || Point::new(c.x + rng.range(-140, 140), c.y + rng.range(-110, 110));
-            let v = [p(), p(), p()];
-            triangle(&mut rng, v)
-        })
-        .collect()
-}
-
-fn small() -> Vec<SceneTriangle> {
-    let mut rng = Rng(0x5A11);
-    (0..5000)
-        .map(|_| {
-            let p = Point::new(
-                rng.range(0, WIDTH as i32 - 5),
-                rng.range(0, HEIGHT as i32 - 5),
-            );
-            let v = [
-                p,
-                p + Point::new(rng.range(3, 4), rng.range(0, 1)),
-                p + Point::new(rng.range(0, 1), rng.range(3, 4)),
-            ];
-            triangle(&mut rng, v)
-        })
-        .collect()
-}
-
-/// A jittered `nx` x `ny` grid, each cell split along a random diagonal; border points slide
-/// only along the border, so the union is exactly the screen.
-pub fn mesh(nx: i32, ny: i32) -> Vec<SceneTriangle> {
-    let mut rng = Rng(0x3E54);
-    let (w, h) = (WIDTH as i32, HEIGHT as i32);
-    let mut pts = Vec::new();
-    for j in 0..=ny {
-        for i in 0..=nx {
-            let mut x = w * i / nx;
-            let mut y = h * j / ny;
-            if i != 0 && i != nx {
-                x += rng.range(-(w / nx) / 4, (w / nx) / 4);
-            }
-            if j != 0 && j != ny {
-                y += rng.range(-(h / ny) / 4, (h / ny) / 4);
-            }
-            pts.push(Point::new(x, y));
-        }
+    for _ in 0..40 {
+        let c = Point::new(rng.range(40, 280), rng.range(30, 210));
+        let mut p = || Point::new(c.x + rng.range(-140, 140), c.y + rng.range(-110, 110));
+        let v = [p(), p(), p()];
+        f(triangle(&mut rng, v));
     }
-    let at = |i: i32, j: i32| pts[(j * (nx + 1) + i) as usize];
-    let mut out = Vec::new();
+}
+
+fn small(mut f: impl FnMut(SceneTriangle)) {
+    let mut rng = Rng(0x5A11);
+    for _ in 0..5000 {
+        let p = Point::new(
+            rng.range(0, WIDTH as i32 - 5),
+            rng.range(0, HEIGHT as i32 - 5),
+        );
+        let v = [
+            p,
+            p + Point::new(rng.range(3, 4), rng.range(0, 1)),
+            p + Point::new(rng.range(0, 1), rng.range(3, 4)),
+        ];
+        f(triangle(&mut rng, v));
+    }
+}
+
+/// Grid point (i, j) of an `nx` x `ny` mesh over the screen: inner points jittered by a hash of
+/// their position (so any point can be computed alone), border points sliding only along the
+/// border, so the union of the mesh is exactly the screen.
+fn mesh_point(nx: i32, ny: i32, i: i32, j: i32) -> Point {
+    let (w, h) = (WIDTH as i32, HEIGHT as i32);
+    let mut hash = Rng(0x3E54 ^ ((i as u64) << 32) ^ j as u64);
+    let mut x = w * i / nx;
+    let mut y = h * j / ny;
+    if i != 0 && i != nx {
+        x += hash.range(-(w / nx) / 4, (w / nx) / 4);
+    }
+    if j != 0 && j != ny {
+        y += hash.range(-(h / ny) / 4, (h / ny) / 4);
+    }
+    Point::new(x, y)
+}
+
+/// A jittered `nx` x `ny` grid, each cell split along a pseudo-random diagonal.
+pub fn mesh(nx: i32, ny: i32, mut f: impl FnMut(SceneTriangle)) {
+    let mut rng = Rng(0x3E54);
+    let at = |i, j| mesh_point(nx, ny, i, j);
     for j in 0..ny {
         for i in 0..nx {
             let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
             if rng.range(0, 1) == 0 {
-                out.push(triangle(&mut rng, [a, b, c]));
-                out.push(triangle(&mut rng, [a, c, d]));
+                f(triangle(&mut rng, [a, b, c]));
+                f(triangle(&mut rng, [a, c, d]));
             } else {
-                out.push(triangle(&mut rng, [a, b, d]));
-                out.push(triangle(&mut rng, [b, c, d]));
+                f(triangle(&mut rng, [a, b, d]));
+                f(triangle(&mut rng, [b, c, d]));
             }
         }
     }
-    out
 }
