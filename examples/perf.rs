@@ -5,7 +5,9 @@
 //! cargo run --release --example perf -- MODE SCENE FRAMES
 //! ```
 //!
-//! MODE: `flat`, `gouraud` (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
+//! MODE: `flat`, `gouraud`, `tex-nearest`, `tex-bilinear` (64x64 `Rgb565` texture repeating
+//! by masking), `tex-nearest-clamp`, `tex-bilinear-clamp`, `tex-nearest-odd` (63x63 texture
+//! repeating by modulo), `tex-modulated` (bilinear times Gouraud) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
 //! scene and framebuffer), `fill-baseline` (the flat spans, precomputed, filled by
 //! `slice::fill`: no covering at all), `coverage` (edge walking alone, nothing drawn).
 //! SCENE: `big`, `small`, `mesh`. The last line printed is
@@ -26,13 +28,50 @@ use embedded_graphics::{
     prelude::*,
     primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
 };
+use fixed::types::I16F16;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
     coverage::{for_each_span, Span},
-    FillRule, FlatStyle, Framebuffer, GouraudStyle, Triangle,
+    texture::{Filter, Texels, Wrap},
+    FillRule, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
-const MODES: &[&str] = &["flat", "gouraud", "eg-flat", "fill-baseline", "coverage"];
+const MODES: &[&str] = &[
+    "flat",
+    "gouraud",
+    "tex-nearest",
+    "tex-bilinear",
+    "tex-nearest-clamp",
+    "tex-bilinear-clamp",
+    "tex-nearest-odd",
+    "tex-modulated",
+    "eg-flat",
+    "fill-baseline",
+    "coverage",
+];
+
+/// A 64 x 64 texture: a checkerboard of 8 x 8 cells over smooth gradients.
+fn texture_pixels(side: u32) -> Vec<Rgb565> {
+    (0..side * side)
+        .map(|i| {
+            let (x, y) = (i % side, i / side);
+            let cell = ((x / 8 + y / 8) % 2) as u8;
+            Rgb565::new(
+                (x % 32) as u8,
+                (y as u8 % 64) | cell,
+                (cell * 31) ^ ((x + y) % 32) as u8,
+            )
+        })
+        .collect()
+}
+
+/// Texture coordinates for a screen position: rotated and scaled by 3/4 (magnified).
+fn texture_coordinates(p: Point) -> [I16F16; 2] {
+    [
+        I16F16::from_bits((p.x * 3 + p.y) << 14),
+        I16F16::from_bits((p.y * 3 - p.x) << 14),
+    ]
+}
 
 /// The spans of a frame, computed once, for the `fill-baseline` mode: what the flat fill costs
 /// if covering were free and each span were a bare `slice::fill`.
@@ -73,11 +112,37 @@ fn fill_baseline(spans: &[(Span, Rgb565)], pixels: &mut [Rgb565]) {
 }
 
 #[inline(never)]
-fn draw_frame<D>(mode: &str, scene: &[SceneTriangle], target: &mut D)
+fn draw_frame<D>(mode: &str, scene: &[SceneTriangle], texels: &[Rgb565], target: &mut D)
 where
     D: DrawTarget<Color = Rgb565>,
     D::Error: core::fmt::Debug,
 {
+    if let Some(kind) = mode.strip_prefix("tex-") {
+        let (filter, wrap, side) = match kind {
+            "nearest" => (Filter::Nearest, Wrap::Repeat, 64),
+            "bilinear" | "modulated" => (Filter::Bilinear, Wrap::Repeat, 64),
+            "nearest-clamp" => (Filter::Nearest, Wrap::Clamp, 64),
+            "bilinear-clamp" => (Filter::Bilinear, Wrap::Clamp, 64),
+            "nearest-odd" => (Filter::Nearest, Wrap::Repeat, 63),
+            _ => unreachable!("mode checked in main"),
+        };
+        let texture = Texels::new(&texels[..(side * side) as usize], side, side).unwrap();
+        for t in scene {
+            let [a, b, c] = t.vertices;
+            let uv = t.vertices.map(texture_coordinates);
+            let mut style = TextureStyle::new(texture, uv)
+                .with_filter(filter)
+                .with_wrap(wrap);
+            if kind == "modulated" {
+                style = style.with_modulation(t.vertex_colors);
+            }
+            Triangle::new(a, b, c)
+                .into_styled(style)
+                .draw(target)
+                .unwrap();
+        }
+        return;
+    }
     match mode {
         "flat" => {
             for t in scene {
@@ -136,13 +201,14 @@ fn main() -> ExitCode {
     }
     let mut scene = Vec::new();
     scene_kind.for_each(|t| scene.push(t));
+    let texels = texture_pixels(64);
     let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
     let mut fb = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).expect("buffer sized for the screen");
 
     // One counted frame (not part of the FRAMES loop).
     let (per_frame, overdraw, gaps) = {
         let mut counting = Counting::new(&mut fb);
-        draw_frame(mode, &scene, &mut counting);
+        draw_frame(mode, &scene, &texels, &mut counting);
         (counting.pixels(), counting.overdraw(), counting.gaps())
     };
 
@@ -162,7 +228,7 @@ fn main() -> ExitCode {
         std::hint::black_box(sum);
     } else {
         for _ in 0..frames {
-            draw_frame(mode, std::hint::black_box(&scene), &mut fb);
+            draw_frame(mode, std::hint::black_box(&scene), &texels, &mut fb);
         }
     }
     let elapsed = start.elapsed();

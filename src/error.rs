@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-/// What can go wrong when setting up buffers and targets.
+/// What can go wrong when setting up buffers, targets and textures.
 ///
 /// Drawing itself never fails on its own: bad geometry (degenerate, huge or off-screen
 /// triangles) draws what the fill rule says, possibly nothing. Errors are reported where a
@@ -37,6 +37,14 @@ pub enum Error {
         /// Height given.
         height: u32,
     },
+    /// A texture side is zero or beyond [`MAX_TEXTURE_SIDE`](crate::texture::MAX_TEXTURE_SIDE),
+    /// or an image gives no texels.
+    TextureSize {
+        /// Width given.
+        width: u32,
+        /// Height given.
+        height: u32,
+    },
 }
 
 impl fmt::Display for Error {
@@ -51,6 +59,10 @@ impl fmt::Display for Error {
             Self::DimensionsTooLarge { width, height } => {
                 write!(f, "dimensions {width}x{height} are too large to address")
             }
+            Self::TextureSize { width, height } => write!(
+                f,
+                "texture size {width}x{height} is not usable: sides must be 1 to 32768"
+            ),
         }
     }
 }

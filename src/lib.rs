@@ -69,12 +69,13 @@ pub mod interpolate;
 mod setup;
 pub mod shading;
 pub mod target;
+pub mod texture;
 
 pub use coverage::FillRule;
 pub use error::Error;
 pub use geometry::{Orientation, Triangle};
 pub use setup::lane::FAST_LIMIT;
-pub use shading::{FlatStyle, GouraudStyle, ShaderStyle};
+pub use shading::{FlatStyle, GouraudStyle, ShaderStyle, TextureStyle};
 pub use target::{Framebuffer, StoredPixel};
 
 /// The README's examples, compiled and run as doc tests.

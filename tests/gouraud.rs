@@ -15,7 +15,7 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 use proptest::prelude::*;
-use trirast::{shading::GouraudColor, FillRule, FlatStyle, GouraudStyle, Triangle};
+use trirast::{shading::ChannelColor, FillRule, FlatStyle, GouraudStyle, Triangle};
 
 /// Exact channel value at `p`, rounded half up.
 fn exact_channel(v: [Point; 3], channel: [u8; 3], p: Point) -> i128 {
@@ -33,7 +33,7 @@ fn check_gouraud<C>(
     tolerance: i128,
 ) -> Result<(), TestCaseError>
 where
-    C: GouraudColor<Channels = [u8; 3]> + core::fmt::Debug,
+    C: ChannelColor<Channels = [u8; 3]> + core::fmt::Debug,
 {
     let mut target = Recorder::<C>::new(window);
     Triangle { vertices: v }

@@ -1,33 +1,33 @@
 //! Plane equations of per-vertex attributes, in fixed point.
 
-use embedded_graphics::geometry::Point;
+use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-/// Attribute gradients are kept to 2^-32 attribute units per pixel; values step at 2^-16.
-const SETUP_BITS: u32 = 32;
+/// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
 
-/// Fixed-point planes of `N` per-vertex attributes over one triangle.
+/// Fixed-point planes of `N` per-vertex attributes over one triangle, evaluated with `SETUP`
+/// fraction bits (32 by default; texture coordinates use 46, keeping 18 integer bits).
 ///
 /// Attribute values are 16.16 fixed point, handled as raw two's complement bits with wrapping
 /// arithmetic, so signed (`I16F16`) and unsigned (`U16F16`) attributes share the code: only the
 /// true value of an attribute inside the triangle must fit 32 bits, not the intermediate terms.
 ///
 /// [`Planes::at`] evaluates every plane at a pixel directly from the reference point, with the
-/// gradients rounded to 2^-32 per pixel, so rows never accumulate error. Along a span the values
+/// gradients rounded to 2^-SETUP per pixel, so rows never accumulate error. Along a span the values
 /// then step by [`Planes::step`] (2^-16 per pixel), additions only.
 #[derive(Copy, Clone, Debug)]
-pub(crate) struct Planes<const N: usize> {
+pub(crate) struct Planes<const N: usize, const SETUP: u32 = 32> {
     origin: Point,
-    /// Values at `origin`, in 2^-32 units.
-    base: [i64; N],
-    /// d/dx and d/dy in 2^-32 units per pixel (wrapping: only sums are meaningful).
-    dx: [i64; N],
+    /// Values at `origin`, in 2^-SETUP units.
+    pub(crate) base: [i64; N],
+    /// d/dx and d/dy in 2^-SETUP units per pixel (wrapping: only sums are meaningful).
+    pub(crate) dx: [i64; N],
     dy: [i64; N],
     /// d/dx in 2^-16 units per pixel, for stepping along a span.
     pub(crate) step: [u32; N],
 }
 
-impl<const N: usize> Planes<N> {
+impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     /// Plane equations through `values` (raw 16.16, one array per vertex) at `vertices`, with
     /// `bias` (raw 16.16) added to every value; `None` for degenerate triangles.
     ///
@@ -55,6 +55,28 @@ impl<const N: usize> Planes<N> {
         }
     }
 
+    /// Plane equations as [`Planes::new`], with the reference kept within `window`: the first
+    /// vertex when it lies inside and the triangle is small, else the window's top-left corner.
+    /// Every pixel of the window then lies within the window's width and height of the
+    /// reference, which bounds the rounding error of [`Planes::at_exact`] whatever the
+    /// triangle's size.
+    #[inline(always)]
+    pub(crate) fn new_in(
+        vertices: [Point; 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        window: &Rectangle,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
+        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+        let small = e.iter().all(|d| d.unsigned_abs() < 1 << 15);
+        if small && window.contains(vertices[0]) {
+            Self::new_small(vertices[0], values, bias, e)
+        } else {
+            Self::new_exact(vertices, values, bias, window.top_left)
+        }
+    }
+
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
     /// for all gradients, and the first vertex as reference, where values are exact.
     #[inline(always)]
@@ -65,13 +87,14 @@ impl<const N: usize> Planes<N> {
         if area == 0 {
             return None;
         }
-        // Gradient = numerator / area, to 2^-32: numerator * 2^16 (raw values carry 2^-16)
-        // times 2^62 / |area|, shifted down by 46. The reciprocal is below 2^62 and the
-        // products below 2^111.
+        // Gradient = numerator / area, to 2^-SETUP: numerator * 2^(SETUP - 16) (raw values
+        // carry 2^-16) times 2^62 / |area|, shifted down by 62 - (SETUP - 16). The reciprocal
+        // is below 2^62 and the products below 2^111.
         let reciprocal = i128::from((1u64 << 62) / area.unsigned_abs());
         let sign = area.signum();
+        let shift = 62 - (SETUP - STEP_BITS);
         let gradient = |numerator: i64| {
-            let scaled = (i128::from(numerator * sign) * reciprocal + (1 << 45)) >> 46;
+            let scaled = (i128::from(numerator * sign) * reciprocal + (1 << (shift - 1))) >> shift;
             // Only the low 64 bits matter: evaluation wraps, and true values fit.
             scaled as i64
         };
@@ -81,7 +104,7 @@ impl<const N: usize> Planes<N> {
             let (da1, da2) = (a1 - a0, a2 - a0);
             planes.dx[k] = gradient(da1 * ey2 - da2 * ey1);
             planes.dy[k] = gradient(da2 * ex1 - da1 * ex2);
-            planes.base[k] = (a0 + bias) << (SETUP_BITS - STEP_BITS);
+            planes.base[k] = (a0 + bias) << (SETUP - STEP_BITS);
         }
         planes.finish();
         Some(planes)
@@ -108,7 +131,7 @@ impl<const N: usize> Planes<N> {
             i128::from(reference.x) - p0.0,
             i128::from(reference.y) - p0.1,
         );
-        let scale = 1i128 << (SETUP_BITS - STEP_BITS);
+        let scale = 1i128 << (SETUP - STEP_BITS);
         let mut planes = Self::empty(reference);
         for k in 0..N {
             let (a0, a1, a2) = (
@@ -141,13 +164,13 @@ impl<const N: usize> Planes<N> {
     /// Derives the per-pixel steps from the gradients.
     #[inline(always)]
     fn finish(&mut self) {
-        let half = 1i64 << (SETUP_BITS - STEP_BITS - 1);
+        let half = 1i64 << (SETUP - STEP_BITS - 1);
         for k in 0..N {
-            self.step[k] = (self.dx[k].wrapping_add(half) >> (SETUP_BITS - STEP_BITS)) as u32;
+            self.step[k] = (self.dx[k].wrapping_add(half) >> (SETUP - STEP_BITS)) as u32;
         }
     }
 
-    /// All values at pixel `(x, y)` in 2^-32 units (bias included).
+    /// All values at pixel `(x, y)` in 2^-SETUP units (bias included).
     #[inline(always)]
     pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
         let ddx = i64::from(x) - i64::from(self.origin.x);
@@ -161,10 +184,10 @@ impl<const N: usize> Planes<N> {
         out
     }
 
-    /// Raw 16.16 values for stepping, from values in 2^-32 units.
+    /// Raw 16.16 values for stepping, from values in 2^-SETUP units.
     #[inline(always)]
     pub(crate) fn to_step_units(values: &[i64; N]) -> [u32; N] {
-        values.map(|v| (v >> (SETUP_BITS - STEP_BITS)) as u32)
+        values.map(|v| (v >> (SETUP - STEP_BITS)) as u32)
     }
 
     /// All values at pixel `(x, y)`, raw 16.16 (bias included).

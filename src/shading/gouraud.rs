@@ -3,117 +3,14 @@
 use embedded_graphics::{
     draw_target::DrawTarget,
     geometry::{Dimensions, Point},
-    pixelcolor::{
-        Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, PixelColor,
-        Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
-    },
     primitives::{Rectangle, StyledDimensions, StyledDrawable},
 };
 
-use super::spans::draw_shaded;
+use super::{
+    spans::{draw_pixels, PlanesShader},
+    ChannelColor,
+};
 use crate::{coverage::FillRule, geometry::Triangle};
-
-/// Colours whose channels Gouraud shading interpolates, each in its own range (0..=31 for the
-/// red channel of `Rgb565`, 0..=3 for `Gray2`, 0..=1 for `BinaryColor`, ...).
-///
-/// Implemented for every colour type of embedded-graphics: `Rgb555`, `Rgb565`, `Rgb666`,
-/// `Rgb888`, their `Bgr` variants, `Gray2`, `Gray4`, `Gray8` and `BinaryColor`.
-///
-/// # Examples
-///
-/// ```
-/// use embedded_graphics::pixelcolor::{Gray4, GrayColor, Rgb565};
-/// use trirast::shading::GouraudColor;
-///
-/// assert_eq!(Rgb565::new(31, 40, 2).channels(), [31, 40, 2]);
-/// assert_eq!(Gray4::from_channels([9]), Gray4::new(9));
-/// ```
-pub trait GouraudColor: PixelColor {
-    /// The channel values: `[u8; 3]` (red, green, blue) or `[u8; 1]` (luma).
-    type Channels: Copy;
-
-    /// The channel values of a colour.
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics::pixelcolor::BinaryColor;
-    /// use trirast::shading::GouraudColor;
-    ///
-    /// assert_eq!(BinaryColor::On.channels(), [1]);
-    /// ```
-    fn channels(self) -> Self::Channels;
-
-    /// The colour with these channel values (out-of-range bits are dropped).
-    ///
-    /// # Examples
-    ///
-    /// ```
-    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-    /// use trirast::shading::GouraudColor;
-    ///
-    /// assert_eq!(Rgb888::from_channels([255, 0, 0]), Rgb888::RED);
-    /// ```
-    fn from_channels(channels: Self::Channels) -> Self;
-}
-
-macro_rules! rgb_gouraud {
-    ($($color:ty),+) => {$(
-        impl GouraudColor for $color {
-            type Channels = [u8; 3];
-
-            #[inline(always)]
-            fn channels(self) -> [u8; 3] {
-                [self.r(), self.g(), self.b()]
-            }
-
-            #[inline(always)]
-            fn from_channels([r, g, b]: [u8; 3]) -> Self {
-                Self::new(r, g, b)
-            }
-        }
-    )+};
-}
-
-rgb_gouraud!(Rgb555, Bgr555, Rgb565, Bgr565, Rgb666, Bgr666, Rgb888, Bgr888);
-
-macro_rules! gray_gouraud {
-    ($($color:ty),+) => {$(
-        impl GouraudColor for $color {
-            type Channels = [u8; 1];
-
-            #[inline(always)]
-            fn channels(self) -> [u8; 1] {
-                [self.luma()]
-            }
-
-            #[inline(always)]
-            fn from_channels([luma]: [u8; 1]) -> Self {
-                Self::new(luma)
-            }
-        }
-    )+};
-}
-
-gray_gouraud!(Gray2, Gray4, Gray8);
-
-impl GouraudColor for BinaryColor {
-    type Channels = [u8; 1];
-
-    #[inline(always)]
-    fn channels(self) -> [u8; 1] {
-        [u8::from(self.is_on())]
-    }
-
-    #[inline(always)]
-    fn from_channels([on]: [u8; 1]) -> Self {
-        if on & 1 == 1 {
-            BinaryColor::On
-        } else {
-            BinaryColor::Off
-        }
-    }
-}
 
 /// Fills a triangle with colours interpolated between its vertices.
 ///
@@ -240,7 +137,7 @@ const BAYER: [[u32; 4]; 4] = {
 
 impl<C, const N: usize> StyledDrawable<GouraudStyle<C>> for Triangle
 where
-    C: GouraudColor<Channels = [u8; N]>,
+    C: ChannelColor<Channels = [u8; N]>,
 {
     type Color = C;
     type Output = ();
@@ -254,26 +151,28 @@ where
             .colors
             .map(|c| c.channels().map(|v| i64::from(v) << 16));
         let rule = style.fill_rule;
+        let origin = target.bounding_box().top_left;
         if style.dither {
-            draw_shaded(self, rule, values, 0, target, |p: Point, v: [u32; N]| {
+            let dithered = |p: Point, v: [u32; N]| {
                 let threshold = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
                 C::from_channels(v.map(|c| (c.wrapping_add(threshold) >> 16) as u8))
-            })
+            };
+            match PlanesShader::new(self, values, 0, origin, dithered) {
+                Some(shader) => draw_pixels(self, rule, target, &shader),
+                None => Ok(()),
+            }
         } else {
             // Half a level of bias turns truncation into rounding to nearest.
-            draw_shaded(
-                self,
-                rule,
-                values,
-                1 << 15,
-                target,
-                |_: Point, v: [u32; N]| C::from_channels(v.map(|c| (c >> 16) as u8)),
-            )
+            let rounded = |_: Point, v: [u32; N]| C::from_channels(v.map(|c| (c >> 16) as u8));
+            match PlanesShader::new(self, values, 1 << 15, origin, rounded) {
+                Some(shader) => draw_pixels(self, rule, target, &shader),
+                None => Ok(()),
+            }
         }
     }
 }
 
-impl<C: GouraudColor> StyledDimensions<GouraudStyle<C>> for Triangle {
+impl<C: ChannelColor> StyledDimensions<GouraudStyle<C>> for Triangle {
     fn styled_bounding_box(&self, _style: &GouraudStyle<C>) -> Rectangle {
         self.bounding_box()
     }

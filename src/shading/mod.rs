@@ -3,11 +3,15 @@
 //! A style pairs with a [`Triangle`](crate::Triangle) through embedded-graphics'
 //! `into_styled`, and the result is [`Drawable`](embedded_graphics::Drawable).
 
+mod channels;
 mod flat;
 mod gouraud;
 mod shader;
 mod spans;
+mod textured;
 
+pub use channels::ChannelColor;
 pub use flat::FlatStyle;
-pub use gouraud::{GouraudColor, GouraudStyle};
+pub use gouraud::GouraudStyle;
 pub use shader::{Fragment, ShaderStyle};
+pub use textured::TextureStyle;

@@ -8,7 +8,7 @@ use embedded_graphics::{
 };
 use fixed::types::I16F16;
 
-use super::spans::draw_shaded;
+use super::spans::{draw_pixels, PlanesShader};
 use crate::{coverage::FillRule, geometry::Triangle};
 
 /// What a shader sees at one pixel: its position and the `N` attributes interpolated there.
@@ -133,19 +133,17 @@ where
         D: DrawTarget<Color = C>,
     {
         let values = style.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
-        draw_shaded(
-            self,
-            style.fill_rule,
-            values,
-            0,
-            target,
-            |position, raw: [u32; N]| {
-                (style.shader)(Fragment {
-                    position,
-                    values: raw.map(|v| I16F16::from_bits(v as i32)),
-                })
-            },
-        )
+        let shade = |position, raw: [u32; N]| {
+            (style.shader)(Fragment {
+                position,
+                values: raw.map(|v| I16F16::from_bits(v as i32)),
+            })
+        };
+        let origin = target.bounding_box().top_left;
+        match PlanesShader::new(self, values, 0, origin, shade) {
+            Some(shader) => draw_pixels(self, style.fill_rule, target, &shader),
+            None => Ok(()),
+        }
     }
 }
 

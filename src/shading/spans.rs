@@ -1,6 +1,6 @@
-//! The span sink that shades pixel by pixel, shared by every interpolating style.
+//! The span driver shared by every per-pixel style: Gouraud, user shaders, textures.
 
-use embedded_graphics::{draw_target::DrawTarget, geometry::Point};
+use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
 use crate::{
     coverage::{walk, FillRule, Span, SpanSink},
@@ -8,63 +8,139 @@ use crate::{
     Triangle,
 };
 
-/// Draws `triangle` with `N` interpolated values per pixel, raw 16.16 (`values` per vertex, in
-/// the triangle's vertex order, `bias` added to all), coloured by `shade(position, values)`.
-///
-/// Each span costs one plane evaluation and one `fill_contiguous` call whose colours step by
-/// additions only.
+/// Computes colours pixel by pixel along a span, by additions.
+pub(crate) trait PixelShader {
+    type Color: PixelColor;
+    /// What changes from one pixel to the next.
+    type State: Copy;
+
+    /// The state at pixel `(x, y)`, the first of a span: computed exactly, not carried over
+    /// from the previous row.
+    fn start(&self, x: i32, y: i32) -> Self::State;
+
+    /// The current pixel's colour; then moves the state one pixel right.
+    fn next(&self, state: &mut Self::State) -> Self::Color;
+
+    /// Whether spans are shaded into a small buffer first: for shaders too big to be inlined
+    /// into the target's fill loop (measured: bilinear filtering), which would otherwise cost
+    /// a call and a trip through memory per pixel.
+    const BUFFERED: bool = false;
+}
+
+/// Draws `triangle` pixel by pixel with `shader`: each span is one `fill_contiguous` call.
 #[inline(always)]
-pub(crate) fn draw_shaded<D, const N: usize, F>(
+pub(crate) fn draw_pixels<D, S>(
     triangle: &Triangle,
     rule: FillRule,
-    values: [[i64; N]; 3],
-    bias: i64,
     target: &mut D,
-    shade: F,
+    shader: &S,
 ) -> Result<(), D::Error>
 where
     D: DrawTarget,
-    F: Fn(Point, [u32; N]) -> D::Color,
+    S: PixelShader<Color = D::Color>,
 {
     let clip = target.bounding_box();
-    let Some(planes) = Planes::new(triangle.vertices, values, bias, clip.top_left) else {
-        return Ok(());
-    };
-    let mut sink = ShadeSpans {
-        target,
-        planes,
-        shade,
-    };
+    let mut sink = ShadeSpans { target, shader };
     walk(triangle, rule, &clip, &mut sink)
 }
 
-struct ShadeSpans<'a, D, const N: usize, F> {
+struct ShadeSpans<'a, D, S> {
     target: &'a mut D,
-    planes: Planes<N>,
-    shade: F,
+    shader: &'a S,
 }
 
-impl<D, const N: usize, F> SpanSink for ShadeSpans<'_, D, N, F>
+impl<D, S> SpanSink for ShadeSpans<'_, D, S>
 where
     D: DrawTarget,
-    F: Fn(Point, [u32; N]) -> D::Color,
+    S: PixelShader<Color = D::Color>,
 {
     type Error = D::Error;
 
     #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        let mut values = self.planes.at(span.x, span.y);
-        let step = self.planes.step;
-        let shade = &self.shade;
-        let mut position = Point::new(span.x, span.y);
-        let colors = (0..span.len).map(move |_| {
-            let color = shade(position, values);
-            position.x = position.x.wrapping_add(1);
-            for (value, step) in values.iter_mut().zip(step) {
-                *value = value.wrapping_add(step);
+        let shader = self.shader;
+        let mut state = shader.start(span.x, span.y);
+        if !S::BUFFERED {
+            let colors = (0..span.len).map(move |_| shader.next(&mut state));
+            return self.target.fill_contiguous(&span.rectangle(), colors);
+        }
+        // Shaders too big to be inlined into the target's fill loop through a closure run in
+        // their own loop, filling a small buffer that the target then copies.
+        let mut x = span.x;
+        let mut remaining = span.len;
+        while remaining > 0 {
+            let first = shader.next(&mut state);
+            let mut buffer = [first; CHUNK];
+            let len = (remaining as usize).min(CHUNK);
+            for slot in &mut buffer[1..len] {
+                *slot = shader.next(&mut state);
             }
-            color
-        });
-        self.target.fill_contiguous(&span.rectangle(), colors)
+            let area = Span {
+                x,
+                y: span.y,
+                len: len as u32,
+            }
+            .rectangle();
+            self.target
+                .fill_contiguous(&area, buffer[..len].iter().copied())?;
+            x = x.wrapping_add(len as i32);
+            remaining -= len as u32;
+        }
+        Ok(())
+    }
+}
+
+/// Pixels per buffered chunk.
+const CHUNK: usize = 32;
+
+/// A shader of `N` interpolated values, coloured by `shade(position, values)`: the machinery
+/// behind Gouraud shading and user shaders.
+pub(crate) struct PlanesShader<const N: usize, F> {
+    pub(crate) planes: Planes<N>,
+    pub(crate) shade: F,
+}
+
+impl<const N: usize, F> PlanesShader<N, F> {
+    /// Planes through `values` (raw 16.16, one array per vertex, in the triangle's vertex
+    /// order, `bias` added to all) for drawing into a window at `origin`; `None` for degenerate
+    /// triangles.
+    #[inline(always)]
+    pub(crate) fn new(
+        triangle: &Triangle,
+        values: [[i64; N]; 3],
+        bias: i64,
+        origin: Point,
+        shade: F,
+    ) -> Option<Self> {
+        Some(Self {
+            planes: Planes::new(triangle.vertices, values, bias, origin)?,
+            shade,
+        })
+    }
+}
+
+impl<C, const N: usize, F> PixelShader for PlanesShader<N, F>
+where
+    C: PixelColor,
+    F: Fn(Point, [u32; N]) -> C,
+{
+    type Color = C;
+    /// Position, values and their steps: the steps are copied into the state so the span
+    /// loop keeps them in registers (read through `&self` they get reloaded every pixel).
+    type State = (Point, [u32; N], [u32; N]);
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        (Point::new(x, y), self.planes.at(x, y), self.planes.step)
+    }
+
+    #[inline(always)]
+    fn next(&self, (position, values, step): &mut Self::State) -> C {
+        let color = (self.shade)(*position, *values);
+        position.x = position.x.wrapping_add(1);
+        for k in 0..N {
+            values[k] = values[k].wrapping_add(step[k]);
+        }
+        color
     }
 }

@@ -1,0 +1,315 @@
+//! Colour channels: what Gouraud shading, texture filtering and modulation compute with.
+
+use embedded_graphics::pixelcolor::{
+    raw::RawData, Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor,
+    PixelColor, Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
+};
+
+/// Colours made of channels that trirast interpolates, each in its own range (0..=31 for the
+/// red channel of `Rgb565`, 0..=3 for `Gray2`, 0..=1 for `BinaryColor`, ...): Gouraud shading,
+/// bilinear texture filtering and texture modulation work on these channels.
+///
+/// Implemented for every colour type of embedded-graphics: `Rgb555`, `Rgb565`, `Rgb666`,
+/// `Rgb888`, their `Bgr` variants, `Gray2`, `Gray4`, `Gray8` and `BinaryColor`.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Gray4, GrayColor, Rgb565};
+/// use trirast::shading::ChannelColor;
+///
+/// assert_eq!(Rgb565::new(31, 40, 2).channels(), [31, 40, 2]);
+/// assert_eq!(Gray4::from_channels([9]), Gray4::new(9));
+/// assert_eq!(Rgb565::MAX_CHANNELS, [31, 63, 31]);
+/// ```
+pub trait ChannelColor: PixelColor {
+    /// The channel values: `[u8; 3]` (red, green, blue) or `[u8; 1]` (luma).
+    type Channels: Copy + Default + AsRef<[u8]> + AsMut<[u8]>;
+
+    /// The largest value of each channel.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray2;
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// assert_eq!(Gray2::MAX_CHANNELS, [3]);
+    /// ```
+    const MAX_CHANNELS: Self::Channels;
+
+    /// The channel values of a colour.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// assert_eq!(BinaryColor::On.channels(), [1]);
+    /// ```
+    fn channels(self) -> Self::Channels;
+
+    /// The colour with these channel values (out-of-range bits are dropped).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// assert_eq!(Rgb888::from_channels([255, 0, 0]), Rgb888::RED);
+    /// ```
+    fn from_channels(channels: Self::Channels) -> Self;
+
+    /// Bits of the weights in [`ChannelColor::bilinear`]: 8 for channels of up to 6 bits, 9
+    /// for 8-bit channels, so that every channel stays within one level of the exact blend.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Rgb565, Rgb888};
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// assert_eq!((Rgb565::WEIGHT_BITS, Rgb888::WEIGHT_BITS), (8, 9));
+    /// ```
+    const WEIGHT_BITS: u32;
+
+    /// The bilinear blend of four texels, `[top left, top right, bottom left, bottom right]`,
+    /// `x` and `y` of the way (in units of 2^-[`WEIGHT_BITS`](ChannelColor::WEIGHT_BITS),
+    /// below 1) from the left to the right texels and from the top to the bottom ones.
+    ///
+    /// Each channel is the weighted sum rounded to nearest. `Rgb565` and `Bgr565` blend all
+    /// three channels at once in one 64-bit word on 64-bit targets.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// let corners = [Gray8::new(0), Gray8::new(100), Gray8::new(200), Gray8::new(100)];
+    /// // A quarter of the way right, halfway down (Gray8 weights have 9 bits).
+    /// assert_eq!(Gray8::bilinear(corners, 128, 256), Gray8::new(100));
+    /// ```
+    #[inline(always)]
+    #[must_use]
+    fn bilinear(corners: [Self; 4], x: u32, y: u32) -> Self {
+        blend_channels(corners, x, y)
+    }
+}
+
+/// [`ChannelColor::bilinear`] channel by channel.
+#[inline(always)]
+fn blend_channels<C: ChannelColor>(corners: [C; 4], wx: u32, wy: u32) -> C {
+    let bits = C::WEIGHT_BITS;
+    let one = 1u32 << bits;
+    let weights = [
+        (one - wx) * (one - wy),
+        wx * (one - wy),
+        (one - wx) * wy,
+        wx * wy,
+    ];
+    let shift = 2 * bits;
+    let channels = corners.map(ChannelColor::channels);
+    let mut out = C::Channels::default();
+    for (k, value) in out.as_mut().iter_mut().enumerate() {
+        let mut sum = 1u32 << (shift - 1);
+        for (corner, weight) in channels.iter().zip(weights) {
+            sum += u32::from(corner.as_ref()[k]) * weight;
+        }
+        *value = (sum >> shift) as u8;
+    }
+    C::from_channels(out)
+}
+
+/// `Rgb565`-layout bilinear blend with 8-bit weights, all channels in one 64-bit word: the
+/// channels are spread to 21-, 22- and 21-bit lanes, wide enough for each channel times 2^16,
+/// so two rounds of linear interpolation (across, then down) stay in their lanes.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
+    // Low channel at bits 0..5, middle at 21..27, high at 43..48.
+    const LANES: u64 = 0x0000_F800_07E0_001F;
+    const COPIES: u64 = 0x0001_0001_0001;
+    let spread = |c: u16| (u64::from(c) * COPIES) & LANES;
+    let (wx, wy) = (u64::from(x), u64::from(y));
+    let [top_left, top_right, bottom_left, bottom_right] = corners.map(spread);
+    let top = top_left * (256 - wx) + top_right * wx;
+    let bottom = bottom_left * (256 - wx) + bottom_right * wx;
+    let half = (1 << 15) | (1 << 36) | (1 << 58); // half a level in each lane (2^15)
+    let lanes = ((top * (256 - wy) + bottom * wy + half) >> 16) & LANES;
+    // Gathers the three lanes back into 16 bits: they land disjointly in bits 32..48.
+    (lanes.wrapping_mul(COPIES) >> 32) as u16
+}
+
+macro_rules! rgb_channels {
+    ($($color:ty),+) => {$(
+        impl ChannelColor for $color {
+            type Channels = [u8; 3];
+
+            const MAX_CHANNELS: [u8; 3] = [<$color>::MAX_R, <$color>::MAX_G, <$color>::MAX_B];
+
+            const WEIGHT_BITS: u32 = if <$color>::MAX_G > 63 { 9 } else { 8 };
+
+            #[inline(always)]
+            fn channels(self) -> [u8; 3] {
+                [self.r(), self.g(), self.b()]
+            }
+
+            #[inline(always)]
+            fn from_channels([r, g, b]: [u8; 3]) -> Self {
+                Self::new(r, g, b)
+            }
+        }
+    )+};
+}
+
+rgb_channels!(Rgb555, Bgr555, Rgb666, Bgr666, Rgb888, Bgr888);
+
+macro_rules! rgb565_channels {
+    ($($color:ty),+) => {$(
+        impl ChannelColor for $color {
+            type Channels = [u8; 3];
+
+            const MAX_CHANNELS: [u8; 3] = [<$color>::MAX_R, <$color>::MAX_G, <$color>::MAX_B];
+
+            const WEIGHT_BITS: u32 = if <$color>::MAX_G > 63 { 9 } else { 8 };
+
+            #[inline(always)]
+            fn channels(self) -> [u8; 3] {
+                [self.r(), self.g(), self.b()]
+            }
+
+            #[inline(always)]
+            fn from_channels([r, g, b]: [u8; 3]) -> Self {
+                Self::new(r, g, b)
+            }
+
+            #[cfg(target_pointer_width = "64")]
+            #[inline(always)]
+            fn bilinear(corners: [Self; 4], x: u32, y: u32) -> Self {
+                use embedded_graphics::pixelcolor::{raw::RawU16, IntoStorage};
+                let raw = blend_565(corners.map(IntoStorage::into_storage), x, y);
+                RawU16::new(raw).into()
+            }
+        }
+    )+};
+}
+
+rgb565_channels!(Rgb565, Bgr565);
+
+macro_rules! gray_channels {
+    ($($color:ty),+) => {$(
+        impl ChannelColor for $color {
+            type Channels = [u8; 1];
+
+            const MAX_CHANNELS: [u8; 1] = [((1u16 << <<$color as PixelColor>::Raw as RawData>::BITS_PER_PIXEL) - 1) as u8];
+
+            const WEIGHT_BITS: u32 = if Self::MAX_CHANNELS[0] > 63 { 9 } else { 8 };
+
+            #[inline(always)]
+            fn channels(self) -> [u8; 1] {
+                [self.luma()]
+            }
+
+            #[inline(always)]
+            fn from_channels([luma]: [u8; 1]) -> Self {
+                Self::new(luma)
+            }
+        }
+    )+};
+}
+
+gray_channels!(Gray2, Gray4, Gray8);
+
+impl ChannelColor for BinaryColor {
+    type Channels = [u8; 1];
+
+    const MAX_CHANNELS: [u8; 1] = [1];
+
+    const WEIGHT_BITS: u32 = 8;
+
+    #[inline(always)]
+    fn channels(self) -> [u8; 1] {
+        [u8::from(self.is_on())]
+    }
+
+    #[inline(always)]
+    fn from_channels([on]: [u8; 1]) -> Self {
+        if on & 1 == 1 {
+            BinaryColor::On
+        } else {
+            BinaryColor::Off
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The blend of one channel with weights of `bits` bits, rounded half up.
+    fn reference(c: [u8; 4], x: u32, y: u32, bits: u32) -> u32 {
+        let one = 1u64 << bits;
+        let (wx, wy) = (u64::from(x), u64::from(y));
+        let w = [
+            (one - wx) * (one - wy),
+            wx * (one - wy),
+            (one - wx) * wy,
+            wx * wy,
+        ];
+        let sum: u64 = c.iter().zip(w).map(|(&c, w)| u64::from(c) * w).sum();
+        ((sum + (1 << (2 * bits - 1))) >> (2 * bits)) as u32
+    }
+
+    #[test]
+    fn rgb565_word_blend_equals_channel_blend() {
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for _ in 0..20_000 {
+            let corners: [Rgb565; 4] = core::array::from_fn(|_| {
+                let r = next();
+                Rgb565::new((r & 31) as u8, (r >> 8 & 63) as u8, (r >> 16 & 31) as u8)
+            });
+            let (x, y) = ((next() & 0xFF) as u32, (next() & 0xFF) as u32);
+            let got = Rgb565::bilinear(corners, x, y).channels();
+            for k in 0..3 {
+                let c = corners.map(|c| c.channels()[k]);
+                assert_eq!(
+                    u32::from(got[k]),
+                    reference(c, x, y, 8),
+                    "{corners:?} {x} {y}"
+                );
+            }
+            let generic = blend_channels(corners, x, y);
+            assert_eq!(generic, Rgb565::bilinear(corners, x, y));
+        }
+    }
+
+    #[test]
+    fn extreme_weights_and_values() {
+        let white = [Rgb565::WHITE; 4];
+        for (x, y) in [(0, 0), (255, 255), (0x7F, 0x80), (0x80, 0)] {
+            assert_eq!(Rgb565::bilinear(white, x, y), Rgb565::WHITE);
+            assert_eq!(
+                Gray8::bilinear([Gray8::WHITE; 4], 2 * x, 2 * y + 1),
+                Gray8::WHITE
+            );
+        }
+        let corners = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE, Rgb565::WHITE];
+        assert_eq!(Rgb565::bilinear(corners, 0, 0), Rgb565::RED);
+        // 255/256 of the way: within half a level of the far corner.
+        assert_eq!(Rgb565::bilinear(corners, 255, 0), Rgb565::GREEN);
+        assert_eq!(Rgb565::bilinear(corners, 0, 255), Rgb565::BLUE);
+        assert_eq!(Rgb565::bilinear(corners, 255, 255), Rgb565::WHITE);
+        assert_eq!(Gray4::MAX_CHANNELS, [15]);
+        assert_eq!(Gray8::MAX_CHANNELS, [255]);
+        assert_eq!(Rgb888::MAX_CHANNELS, [255; 3]);
+    }
+}

@@ -1,0 +1,534 @@
+//! Texture mapping: texels sampled at interpolated texture coordinates, optionally tinted by
+//! Gouraud-interpolated colours.
+
+use embedded_graphics::{
+    draw_target::DrawTarget,
+    geometry::{Dimensions, Point},
+    primitives::{Rectangle, StyledDimensions, StyledDrawable},
+};
+use fixed::types::I16F16;
+
+use super::{
+    spans::{draw_pixels, PixelShader},
+    ChannelColor,
+};
+use crate::{
+    coverage::FillRule,
+    geometry::Triangle,
+    interpolate::Planes,
+    texture::{Axis, Clamped, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS},
+};
+
+/// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
+/// at its texture coordinate, interpolated from the vertices' coordinates.
+///
+/// Coordinates are in texels, texel `(i, j)` centred on `(i, j)` (see [`crate::texture`]);
+/// they are interpolated with 46 fraction bits from plane equations set up once per triangle,
+/// and stepped along each span by one addition per coordinate: no division per pixel.
+///
+/// [`Filter::Nearest`] picks exactly the texel containing the exact (rational) interpolated
+/// coordinate, rounding half up, for every triangle drawn into a window up to 2048 x 2048
+/// whose area is below 2^18 pixels (a triangle covering a 480 x 320 screen, say; precisely,
+/// while `(2 * width + height + 4) * 2 * area < 2^30`); beyond, the coordinate used is within
+/// 2^-30 texel of exact. [`Filter::Bilinear`] is within one level of the exact blend in every
+/// channel. Power-of-two textures repeat by masking; other sizes repeat with one division per
+/// span.
+///
+/// [`TextureStyle::with_modulation`] multiplies the texels by colours interpolated between the
+/// vertices, for lit or tinted textures.
+///
+/// # Examples
+///
+/// A 2 x 2 checker texture stretched over a 4 x 4 square:
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use trirast::{texture::Texels, TextureStyle, Triangle};
+///
+/// let texels = [BinaryColor::On, BinaryColor::Off, BinaryColor::Off, BinaryColor::On];
+/// let texture = Texels::new(&texels, 2, 2)?;
+/// let (a, b, c, d) = (Point::new(0, 0), Point::new(4, 0), Point::new(4, 4), Point::new(0, 4));
+/// // Texel coordinates at the corners: half a texel out, so each texel covers 2 x 2 pixels.
+/// let at = |p: Point| [p.x, p.y].map(|t| fixed::types::I16F16::from_num(t) / 2 - fixed::types::I16F16::from_num(0.25));
+/// let mut display = MockDisplay::new();
+/// for (p, q, r) in [(a, b, c), (a, c, d)] {
+///     Triangle::new(p, q, r)
+///         .into_styled(TextureStyle::new(texture, [at(p), at(q), at(r)]))
+///         .draw(&mut display)
+///         .unwrap();
+/// }
+/// display.assert_pattern(&[
+///     "##..", //
+///     "##..",
+///     "..##",
+///     "..##",
+/// ]);
+/// # Ok::<(), trirast::Error>(())
+/// ```
+#[derive(Copy, Clone, Debug)]
+pub struct TextureStyle<T: TexelSource> {
+    /// The texels.
+    pub texture: T,
+    /// The texture coordinates `[u, v]` of each vertex, in texels, in the triangle's vertex
+    /// order.
+    pub coordinates: [[I16F16; 2]; 3],
+    /// How texels are sampled; [`Filter::Nearest`] by default.
+    pub filter: Filter,
+    /// What coordinates outside the texture address; [`Wrap::Clamp`] by default.
+    pub wrap: Wrap,
+    /// Colours per vertex multiplying the texels (white leaves them unchanged); none by
+    /// default.
+    pub modulation: Option<[T::Color; 3]>,
+    /// Which boundary pixels belong to the triangle; [`FillRule::TopLeft`] by default.
+    pub fill_rule: FillRule,
+}
+
+impl<T: TexelSource> TextureStyle<T> {
+    /// A style mapping `texture` with texture coordinates `[u, v]` per vertex, in texels.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use fixed::types::I16F16;
+    /// use trirast::{texture::{Filter, Texels}, TextureStyle};
+    ///
+    /// let pixels = [Rgb565::default(); 16 * 16];
+    /// let texture = Texels::new(&pixels, 16, 16)?;
+    /// let zero = I16F16::ZERO;
+    /// let side = I16F16::from_num(16);
+    /// let style = TextureStyle::new(texture, [[zero, zero], [side, zero], [zero, side]]);
+    /// assert_eq!(style.filter, Filter::Nearest);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(texture: T, coordinates: [[I16F16; 2]; 3]) -> Self {
+        Self {
+            texture,
+            coordinates,
+            filter: Filter::Nearest,
+            wrap: Wrap::Clamp,
+            modulation: None,
+            fill_rule: FillRule::TopLeft,
+        }
+    }
+
+    /// A style mapping `texture` with whole-texel coordinates per vertex, saturated to the
+    /// `I16F16` range.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use fixed::types::I16F16;
+    /// use trirast::{texture::Texels, TextureStyle};
+    ///
+    /// let pixels = [Gray8::new(0); 8 * 8];
+    /// let texture = Texels::new(&pixels, 8, 8)?;
+    /// let style = TextureStyle::from_points(texture, [Point::new(0, 0), Point::new(8, 0), Point::new(8, 8)]);
+    /// assert_eq!(style.coordinates[1], [I16F16::from_num(8), I16F16::ZERO]);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_points(texture: T, points: [Point; 3]) -> Self {
+        const fn texels(t: i32) -> I16F16 {
+            let t = if t < i16::MIN as i32 {
+                i16::MIN as i32
+            } else if t > i16::MAX as i32 {
+                i16::MAX as i32
+            } else {
+                t
+            };
+            I16F16::from_bits(t << 16)
+        }
+        let [a, b, c] = points;
+        Self::new(
+            texture,
+            [
+                [texels(a.x), texels(a.y)],
+                [texels(b.x), texels(b.y)],
+                [texels(c.x), texels(c.y)],
+            ],
+        )
+    }
+
+    /// The same style with another filter.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{texture::{Filter, Texels}, TextureStyle};
+    ///
+    /// let pixels = [Gray8::new(0); 4];
+    /// let style = TextureStyle::from_points(Texels::new(&pixels, 2, 2)?, [Point::zero(); 3])
+    ///     .with_filter(Filter::Bilinear);
+    /// assert_eq!(style.filter, Filter::Bilinear);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_filter(mut self, filter: Filter) -> Self {
+        self.filter = filter;
+        self
+    }
+
+    /// The same style with another wrap mode.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{texture::{Texels, Wrap}, TextureStyle};
+    ///
+    /// let pixels = [Gray8::new(0); 4];
+    /// let style = TextureStyle::from_points(Texels::new(&pixels, 2, 2)?, [Point::zero(); 3])
+    ///     .with_wrap(Wrap::Repeat);
+    /// assert_eq!(style.wrap, Wrap::Repeat);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_wrap(mut self, wrap: Wrap) -> Self {
+        self.wrap = wrap;
+        self
+    }
+
+    /// The same style with the texels multiplied by `colors`, one per vertex, interpolated as
+    /// in Gouraud shading: each channel becomes `texel * color / max`, rounded. White leaves
+    /// the texture unchanged, black makes it black.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use trirast::{texture::Texels, Framebuffer, TextureStyle, Triangle};
+    ///
+    /// let texels = [Rgb565::WHITE; 4];
+    /// let (a, b, c) = (Point::new(0, 0), Point::new(16, 0), Point::new(0, 16));
+    /// let style = TextureStyle::from_points(Texels::new(&texels, 2, 2)?, [a, b, c])
+    ///     .with_modulation([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE]);
+    /// let mut pixels = [Rgb565::BLACK; 16 * 16];
+    /// let mut display = Framebuffer::new(&mut pixels, 16, 16)?;
+    /// Triangle::new(a, b, c).into_styled(style).draw(&mut display).unwrap();
+    /// assert_eq!(display.pixel(a), Some(Rgb565::RED));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_modulation(mut self, colors: [T::Color; 3]) -> Self {
+        self.modulation = Some(colors);
+        self
+    }
+
+    /// The same style with another fill rule.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{texture::Texels, FillRule, TextureStyle};
+    ///
+    /// let pixels = [Gray8::new(0); 4];
+    /// let style = TextureStyle::from_points(Texels::new(&pixels, 2, 2)?, [Point::zero(); 3])
+    ///     .with_fill_rule(FillRule::Inclusive);
+    /// assert_eq!(style.fill_rule, FillRule::Inclusive);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_fill_rule(mut self, fill_rule: FillRule) -> Self {
+        self.fill_rule = fill_rule;
+        self
+    }
+}
+
+impl<T, const M: usize> StyledDrawable<TextureStyle<T>> for Triangle
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+{
+    type Color = T::Color;
+    type Output = ();
+
+    #[inline]
+    fn draw_styled<D>(&self, style: &TextureStyle<T>, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        let window = target.bounding_box();
+        let Some(coordinates) = coordinate_planes(self, style, &window) else {
+            return Ok(());
+        };
+        let size = style.texture.size();
+        let tint = match style.modulation {
+            Some(colors) => match tint_planes(self, colors, &window) {
+                Some(planes) => Some(planes),
+                None => return Ok(()),
+            },
+            None => None,
+        };
+        match style.wrap {
+            Wrap::Clamp => {
+                let axes = (Clamped::new(size.width), Clamped::new(size.height));
+                draw_with_axes(self, style, target, coordinates, axes, tint)
+            }
+            Wrap::Repeat => {
+                if let (Some(u), Some(v)) = (
+                    Pow2Repeated::new(size.width),
+                    Pow2Repeated::new(size.height),
+                ) {
+                    draw_with_axes(self, style, target, coordinates, (u, v), tint)
+                } else {
+                    let axes = (Repeated::new(size.width), Repeated::new(size.height));
+                    draw_with_axes(self, style, target, coordinates, axes, tint)
+                }
+            }
+        }
+    }
+}
+
+impl<T: TexelSource> StyledDimensions<TextureStyle<T>> for Triangle {
+    fn styled_bounding_box(&self, _style: &TextureStyle<T>) -> Rectangle {
+        self.bounding_box()
+    }
+}
+
+/// The planes of the texture coordinates, biased so that truncating them rounds as the filter
+/// needs, and lifted so that they never fall below the exact coordinate.
+#[inline(always)]
+fn coordinate_planes<T>(
+    triangle: &Triangle,
+    style: &TextureStyle<T>,
+    window: &Rectangle,
+) -> Option<Planes<2, COORDINATE_BITS>>
+where
+    T: TexelSource,
+    T::Color: ChannelColor,
+{
+    let values = style
+        .coordinates
+        .map(|[u, v]| [i64::from(u.to_bits()), i64::from(v.to_bits())]);
+    // Nearest takes floor(u + 1/2); bilinear splits u into floor and a fraction truncated to
+    // the weight bits, so half a weight step rounds it to nearest.
+    let bias = match style.filter {
+        Filter::Nearest => 1 << 15,
+        Filter::Bilinear => 1 << (15 - T::Color::WEIGHT_BITS),
+    };
+    let mut planes = Planes::new_in(triangle.vertices, values, bias, window)?;
+    // Gradients are rounded to 2^-46, so a value `dx` pixels across and `dy` down from the
+    // reference (both within the window), then `k` pixels along a span, is off by at most
+    // (|dx| + |dy| + k + 1) / 2 units. Adding that much keeps every value at or above the
+    // exact one and less than (2 * width + height + 2) units over, which is below the
+    // distance from any exact coordinate to the next texel boundary it does not lie on
+    // (1 / (2^16 * 2 * area) texels) under the documented size limit: truncation then picks
+    // the exact texel, ties included.
+    let lift = i64::from(window.size.width) + i64::from(window.size.height / 2) + 2;
+    for base in &mut planes.base {
+        *base = base.wrapping_add(lift);
+    }
+    Some(planes)
+}
+
+/// The planes of the modulation factors: each channel as a 16.16 fraction of its maximum.
+#[inline(always)]
+fn tint_planes<C, const M: usize>(
+    triangle: &Triangle,
+    colors: [C; 3],
+    window: &Rectangle,
+) -> Option<Planes<M>>
+where
+    C: ChannelColor<Channels = [u8; M]>,
+{
+    let max = C::MAX_CHANNELS;
+    let values = colors.map(|c| {
+        let channels = c.channels();
+        core::array::from_fn(|k| {
+            let m = i64::from(max[k].max(1));
+            (i64::from(channels[k]) * 65536 + m / 2) / m
+        })
+    });
+    Planes::new_in(triangle.vertices, values, 0, window)
+}
+
+/// Dispatches on filter and modulation, the choices that change the per-pixel work.
+#[inline(always)]
+fn draw_with_axes<T, A, D, const M: usize>(
+    triangle: &Triangle,
+    style: &TextureStyle<T>,
+    target: &mut D,
+    coordinates: Planes<2, COORDINATE_BITS>,
+    (u, v): (A, A),
+    tint: Option<Planes<M>>,
+) -> Result<(), D::Error>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+    A: Axis,
+    D: DrawTarget<Color = T::Color>,
+{
+    let sampler = Sampler {
+        texture: style.texture,
+        u,
+        v,
+        du: u.step(coordinates.dx[0]),
+        dv: v.step(coordinates.dx[1]),
+    };
+    let rule = style.fill_rule;
+    match (style.filter, tint) {
+        (Filter::Nearest, None) => {
+            let shader = TexturedShader::<_, _, M, false, false>::new(sampler, coordinates, None);
+            draw_pixels(triangle, rule, target, &shader)
+        }
+        (Filter::Bilinear, None) => {
+            let shader = TexturedShader::<_, _, M, true, false>::new(sampler, coordinates, None);
+            draw_pixels(triangle, rule, target, &shader)
+        }
+        (Filter::Nearest, Some(tint)) => {
+            let shader =
+                TexturedShader::<_, _, M, false, true>::new(sampler, coordinates, Some(tint));
+            draw_pixels(triangle, rule, target, &shader)
+        }
+        (Filter::Bilinear, Some(tint)) => {
+            let shader =
+                TexturedShader::<_, _, M, true, true>::new(sampler, coordinates, Some(tint));
+            draw_pixels(triangle, rule, target, &shader)
+        }
+    }
+}
+
+/// A texture with its addressing and the per-pixel coordinate steps: everything the span loop
+/// reads, copied into its state so it stays in registers.
+#[derive(Copy, Clone, Debug)]
+struct Sampler<T, A: Axis> {
+    texture: T,
+    u: A,
+    v: A,
+    du: A::Coord,
+    dv: A::Coord,
+}
+
+impl<T: TexelSource, A: Axis> Sampler<T, A>
+where
+    T::Color: ChannelColor,
+{
+    #[inline(always)]
+    fn nearest(&self, u: A::Coord, v: A::Coord) -> T::Color {
+        self.texture.texel(self.u.nearest(u), self.v.nearest(v))
+    }
+
+    #[inline(always)]
+    fn bilinear(&self, u: A::Coord, v: A::Coord) -> T::Color {
+        let drop = 16 - T::Color::WEIGHT_BITS;
+        let (left, right, across) = self.u.linear(u);
+        let (top, bottom, down) = self.v.linear(v);
+        let texture = &self.texture;
+        let corners = [
+            texture.texel(left, top),
+            texture.texel(right, top),
+            texture.texel(left, bottom),
+            texture.texel(right, bottom),
+        ];
+        T::Color::bilinear(corners, across >> drop, down >> drop)
+    }
+}
+
+/// The per-pixel shader of a textured triangle.
+struct TexturedShader<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
+    sampler: Sampler<T, A>,
+    coordinates: Planes<2, COORDINATE_BITS>,
+    tint: Option<Planes<M>>,
+}
+
+impl<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool>
+    TexturedShader<T, A, M, BILINEAR, MODULATE>
+{
+    #[inline(always)]
+    fn new(
+        sampler: Sampler<T, A>,
+        coordinates: Planes<2, COORDINATE_BITS>,
+        tint: Option<Planes<M>>,
+    ) -> Self {
+        Self {
+            sampler,
+            coordinates,
+            tint,
+        }
+    }
+}
+
+/// Where a span is: texture coordinates and modulation factors, with their steps.
+#[derive(Copy, Clone, Debug)]
+struct TexturedState<T, A: Axis, const M: usize> {
+    sampler: Sampler<T, A>,
+    u: A::Coord,
+    v: A::Coord,
+    tint: [u32; M],
+    tint_step: [u32; M],
+}
+
+impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> PixelShader
+    for TexturedShader<T, A, M, BILINEAR, MODULATE>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+    A: Axis,
+{
+    type Color = T::Color;
+    type State = TexturedState<T, A, M>;
+
+    const BUFFERED: bool = BILINEAR;
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        let [u, v] = self.coordinates.at_exact(x, y);
+        let (tint, tint_step) = match (MODULATE, &self.tint) {
+            (true, Some(planes)) => (planes.at(x, y), planes.step),
+            _ => ([0; M], [0; M]),
+        };
+        TexturedState {
+            sampler: self.sampler,
+            u: self.sampler.u.coord(u),
+            v: self.sampler.v.coord(v),
+            tint,
+            tint_step,
+        }
+    }
+
+    #[inline(always)]
+    fn next(&self, state: &mut Self::State) -> T::Color {
+        let sampler = &state.sampler;
+        let texel = if BILINEAR {
+            sampler.bilinear(state.u, state.v)
+        } else {
+            sampler.nearest(state.u, state.v)
+        };
+        state.u = sampler.u.advance(state.u, sampler.du);
+        state.v = sampler.v.advance(state.v, sampler.dv);
+        if MODULATE {
+            let factors = state.tint;
+            for k in 0..M {
+                state.tint[k] = state.tint[k].wrapping_add(state.tint_step[k]);
+            }
+            modulate(texel, factors)
+        } else {
+            texel
+        }
+    }
+}
+
+/// `texel` with each channel multiplied by a 16.16 factor (clamped to 0..=1), rounded.
+#[inline(always)]
+fn modulate<C, const M: usize>(texel: C, factors: [u32; M]) -> C
+where
+    C: ChannelColor<Channels = [u8; M]>,
+{
+    let channels = texel.channels();
+    C::from_channels(core::array::from_fn(|k| {
+        // Interpolation may overshoot 0 or 1 by a unit; a wrapped negative factor is huge.
+        let factor = (factors[k] as i32).clamp(0, 1 << 16) as u32;
+        ((u32::from(channels[k]) * factor + (1 << 15)) >> 16) as u8
+    }))
+}
