@@ -5,9 +5,11 @@
 //! cargo run --release --example perf -- MODE SCENE FRAMES
 //! ```
 //!
-//! MODE: `flat`, `gouraud`, `tex-nearest`, `tex-bilinear` (64x64 `Rgb565` texture repeating
-//! by masking), `tex-nearest-clamp`, `tex-bilinear-clamp`, `tex-nearest-odd` (63x63 texture
-//! repeating by modulo), `tex-modulated` (bilinear times Gouraud) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
+//! MODE: `flat`, `gouraud`, `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
+//! over each triangle's bounding box, clamped), `tex-modulated` (the same, bilinear, times
+//! Gouraud colours), `tex-nearest-repeat`, `tex-bilinear-repeat` (the texture tiled across
+//! the screen, rotated: repeat by masking), `tex-nearest-clamp` (tiled coordinates, clamped),
+//! `tex-nearest-odd` (a 63x63 texture tiled: repeat by modulo) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
 //! scene and framebuffer), `fill-baseline` (the flat spans, precomputed, filled by
 //! `slice::fill`: no covering at all), `coverage` (edge walking alone, nothing drawn).
 //! SCENE: `big`, `small`, `mesh`. The last line printed is
@@ -41,10 +43,11 @@ const MODES: &[&str] = &[
     "gouraud",
     "tex-nearest",
     "tex-bilinear",
-    "tex-nearest-clamp",
-    "tex-bilinear-clamp",
-    "tex-nearest-odd",
     "tex-modulated",
+    "tex-nearest-repeat",
+    "tex-bilinear-repeat",
+    "tex-nearest-clamp",
+    "tex-nearest-odd",
     "eg-flat",
     "fill-baseline",
     "coverage",
@@ -65,12 +68,29 @@ fn texture_pixels(side: u32) -> Vec<Rgb565> {
         .collect()
 }
 
-/// Texture coordinates for a screen position: rotated and scaled by 3/4 (magnified).
-fn texture_coordinates(p: Point) -> [I16F16; 2] {
+/// Texture coordinates for a screen position, tiling the screen: rotated and scaled by 3/4
+/// (magnified).
+fn tiled_coordinates(p: Point) -> [I16F16; 2] {
     [
         I16F16::from_bits((p.x * 3 + p.y) << 14),
         I16F16::from_bits((p.y * 3 - p.x) << 14),
     ]
+}
+
+/// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
+/// bounding box.
+fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
+    let (x0, x1) = (
+        vertices.map(|p| p.x).into_iter().min().unwrap(),
+        vertices.map(|p| p.x).into_iter().max().unwrap(),
+    );
+    let (y0, y1) = (
+        vertices.map(|p| p.y).into_iter().min().unwrap(),
+        vertices.map(|p| p.y).into_iter().max().unwrap(),
+    );
+    let along =
+        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
+    vertices.map(|p| [along(p.x, x0, x1), along(p.y, y0, y1)])
 }
 
 /// The spans of a frame, computed once, for the `fill-baseline` mode: what the flat fill costs
@@ -111,73 +131,116 @@ fn fill_baseline(spans: &[(Span, Rgb565)], pixels: &mut [Rgb565]) {
     }
 }
 
-#[inline(never)]
+/// Draws one frame in `mode`. Each mode is its own non-inlined function so that its code
+/// (and so its instruction count) does not depend on what the other modes do.
 fn draw_frame<D>(mode: &str, scene: &[SceneTriangle], texels: &[Rgb565], target: &mut D)
 where
     D: DrawTarget<Color = Rgb565>,
     D::Error: core::fmt::Debug,
 {
-    if let Some(kind) = mode.strip_prefix("tex-") {
-        let (filter, wrap, side) = match kind {
-            "nearest" => (Filter::Nearest, Wrap::Repeat, 64),
-            "bilinear" | "modulated" => (Filter::Bilinear, Wrap::Repeat, 64),
-            "nearest-clamp" => (Filter::Nearest, Wrap::Clamp, 64),
-            "bilinear-clamp" => (Filter::Bilinear, Wrap::Clamp, 64),
-            "nearest-odd" => (Filter::Nearest, Wrap::Repeat, 63),
-            _ => unreachable!("mode checked in main"),
-        };
-        let texture = Texels::new(&texels[..(side * side) as usize], side, side).unwrap();
-        for t in scene {
-            let [a, b, c] = t.vertices;
-            let uv = t.vertices.map(texture_coordinates);
-            let mut style = TextureStyle::new(texture, uv)
-                .with_filter(filter)
-                .with_wrap(wrap);
-            if kind == "modulated" {
-                style = style.with_modulation(t.vertex_colors);
-            }
-            Triangle::new(a, b, c)
-                .into_styled(style)
-                .draw(target)
-                .unwrap();
-        }
-        return;
-    }
     match mode {
-        "flat" => {
-            for t in scene {
-                let [a, b, c] = t.vertices;
-                Triangle::new(a, b, c)
-                    .into_styled(FlatStyle::new(t.color))
-                    .draw(target)
-                    .unwrap();
-            }
-        }
-        "gouraud" => {
-            for t in scene {
-                let [a, b, c] = t.vertices;
-                Triangle::new(a, b, c)
-                    .into_styled(GouraudStyle::new(t.vertex_colors))
-                    .draw(target)
-                    .unwrap();
-            }
-        }
-        "eg-flat" => {
-            for t in scene {
-                let [a, b, c] = t.vertices;
-                EgTriangle::new(a, b, c)
-                    .into_styled(PrimitiveStyle::with_fill(t.color))
-                    .draw(target)
-                    .unwrap();
-            }
-        }
+        "flat" => flat_frame(scene, target),
+        "gouraud" => gouraud_frame(scene, target),
+        "eg-flat" => eg_flat_frame(scene, target),
         "fill-baseline" | "coverage" => {
             // Only for counting: the timed loop fills precomputed spans directly.
             for (span, color) in frame_spans(scene) {
                 target.fill_solid(&span.rectangle(), color).unwrap();
             }
         }
-        _ => unreachable!("mode checked in main"),
+        _ => {
+            let kind = mode.strip_prefix("tex-").expect("mode checked in main");
+            let (filter, wrap, side, tiled) = match kind {
+                "nearest" => (Filter::Nearest, Wrap::Clamp, 64, false),
+                "bilinear" | "modulated" => (Filter::Bilinear, Wrap::Clamp, 64, false),
+                "nearest-repeat" => (Filter::Nearest, Wrap::Repeat, 64, true),
+                "bilinear-repeat" => (Filter::Bilinear, Wrap::Repeat, 64, true),
+                "nearest-clamp" => (Filter::Nearest, Wrap::Clamp, 64, true),
+                "nearest-odd" => (Filter::Nearest, Wrap::Repeat, 63, true),
+                _ => unreachable!("mode checked in main"),
+            };
+            let texture = Texels::new(&texels[..(side * side) as usize], side, side).unwrap();
+            let modulated = kind == "modulated";
+            texture_frame(scene, texture, filter, wrap, tiled, modulated, target);
+        }
+    }
+}
+
+#[inline(never)]
+fn flat_frame<D>(scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        Triangle::new(a, b, c)
+            .into_styled(FlatStyle::new(t.color))
+            .draw(target)
+            .unwrap();
+    }
+}
+
+#[inline(never)]
+fn gouraud_frame<D>(scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        Triangle::new(a, b, c)
+            .into_styled(GouraudStyle::new(t.vertex_colors))
+            .draw(target)
+            .unwrap();
+    }
+}
+
+#[inline(never)]
+fn eg_flat_frame<D>(scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        EgTriangle::new(a, b, c)
+            .into_styled(PrimitiveStyle::with_fill(t.color))
+            .draw(target)
+            .unwrap();
+    }
+}
+
+#[inline(never)]
+fn texture_frame<D>(
+    scene: &[SceneTriangle],
+    texture: Texels<'_, Rgb565>,
+    filter: Filter,
+    wrap: Wrap,
+    tiled: bool,
+    modulated: bool,
+    target: &mut D,
+) where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        let [a, b, c] = t.vertices;
+        let uv = if tiled {
+            t.vertices.map(tiled_coordinates)
+        } else {
+            stretched_coordinates(t.vertices)
+        };
+        let mut style = TextureStyle::new(texture, uv)
+            .with_filter(filter)
+            .with_wrap(wrap);
+        if modulated {
+            style = style.with_modulation(t.vertex_colors);
+        }
+        Triangle::new(a, b, c)
+            .into_styled(style)
+            .draw(target)
+            .unwrap();
     }
 }
 

@@ -58,36 +58,44 @@ where
 
     #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        let shader = self.shader;
-        let mut state = shader.start(span.x, span.y);
-        if !S::BUFFERED {
-            let colors = (0..span.len).map(move |_| shader.next(&mut state));
-            return self.target.fill_contiguous(&span.rectangle(), colors);
-        }
-        // Shaders too big to be inlined into the target's fill loop through a closure run in
-        // their own loop, filling a small buffer that the target then copies.
-        let mut x = span.x;
-        let mut remaining = span.len;
-        while remaining > 0 {
-            let first = shader.next(&mut state);
-            let mut buffer = [first; CHUNK];
-            let len = (remaining as usize).min(CHUNK);
-            for slot in &mut buffer[1..len] {
-                *slot = shader.next(&mut state);
-            }
-            let area = Span {
-                x,
-                y: span.y,
-                len: len as u32,
-            }
-            .rectangle();
-            self.target
-                .fill_contiguous(&area, buffer[..len].iter().copied())?;
-            x = x.wrapping_add(len as i32);
-            remaining -= len as u32;
-        }
-        Ok(())
+        shade_span(self.shader, span, self.target)
     }
+}
+
+/// Shades one span with `shader` into `target`.
+#[inline(always)]
+pub(crate) fn shade_span<D, S>(shader: &S, span: Span, target: &mut D) -> Result<(), D::Error>
+where
+    D: DrawTarget,
+    S: PixelShader<Color = D::Color>,
+{
+    let mut state = shader.start(span.x, span.y);
+    if !S::BUFFERED {
+        let colors = (0..span.len).map(move |_| shader.next(&mut state));
+        return target.fill_contiguous(&span.rectangle(), colors);
+    }
+    // Shaders too big to be inlined into the target's fill loop through a closure run in
+    // their own loop, filling a small buffer that the target then copies.
+    let mut x = span.x;
+    let mut remaining = span.len;
+    while remaining > 0 {
+        let first = shader.next(&mut state);
+        let mut buffer = [first; CHUNK];
+        let len = (remaining as usize).min(CHUNK);
+        for slot in &mut buffer[1..len] {
+            *slot = shader.next(&mut state);
+        }
+        let area = Span {
+            x,
+            y: span.y,
+            len: len as u32,
+        }
+        .rectangle();
+        target.fill_contiguous(&area, buffer[..len].iter().copied())?;
+        x = x.wrapping_add(len as i32);
+        remaining -= len as u32;
+    }
+    Ok(())
 }
 
 /// Pixels per buffered chunk.

@@ -9,14 +9,16 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 
 use super::{
-    spans::{draw_pixels, PixelShader},
+    spans::{shade_span, PixelShader},
     ChannelColor,
 };
 use crate::{
-    coverage::FillRule,
+    coverage::{walk, FillRule, Span, SpanSink},
     geometry::Triangle,
     interpolate::Planes,
-    texture::{Axis, Clamped, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS},
+    texture::{
+        Axis, Clamped, Direct, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS,
+    },
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
@@ -360,7 +362,7 @@ fn draw_with_axes<T, A, D, const M: usize>(
     style: &TextureStyle<T>,
     target: &mut D,
     coordinates: Planes<2, COORDINATE_BITS>,
-    (u, v): (A, A),
+    axes: (A, A),
     tint: Option<Planes<M>>,
 ) -> Result<(), D::Error>
 where
@@ -369,32 +371,143 @@ where
     A: Axis,
     D: DrawTarget<Color = T::Color>,
 {
-    let sampler = Sampler {
-        texture: style.texture,
-        u,
-        v,
-        du: u.step(coordinates.dx[0]),
-        dv: v.step(coordinates.dx[1]),
-    };
     let rule = style.fill_rule;
+    let texture = style.texture;
     match (style.filter, tint) {
         (Filter::Nearest, None) => {
-            let shader = TexturedShader::<_, _, M, false, false>::new(sampler, coordinates, None);
-            draw_pixels(triangle, rule, target, &shader)
+            let spans = TexturedSpans::<_, _, _, M, false, false>::new(
+                target,
+                texture,
+                coordinates,
+                axes,
+                None,
+            );
+            spans.draw(triangle, rule)
         }
         (Filter::Bilinear, None) => {
-            let shader = TexturedShader::<_, _, M, true, false>::new(sampler, coordinates, None);
-            draw_pixels(triangle, rule, target, &shader)
+            let spans = TexturedSpans::<_, _, _, M, true, false>::new(
+                target,
+                texture,
+                coordinates,
+                axes,
+                None,
+            );
+            spans.draw(triangle, rule)
         }
         (Filter::Nearest, Some(tint)) => {
-            let shader =
-                TexturedShader::<_, _, M, false, true>::new(sampler, coordinates, Some(tint));
-            draw_pixels(triangle, rule, target, &shader)
+            let spans = TexturedSpans::<_, _, _, M, false, true>::new(
+                target,
+                texture,
+                coordinates,
+                axes,
+                Some(tint),
+            );
+            spans.draw(triangle, rule)
         }
         (Filter::Bilinear, Some(tint)) => {
-            let shader =
-                TexturedShader::<_, _, M, true, true>::new(sampler, coordinates, Some(tint));
-            draw_pixels(triangle, rule, target, &shader)
+            let spans = TexturedSpans::<_, _, _, M, true, true>::new(
+                target,
+                texture,
+                coordinates,
+                axes,
+                Some(tint),
+            );
+            spans.draw(triangle, rule)
+        }
+    }
+}
+
+/// The span sink of a textured triangle: spans whose coordinates stay inside the texture
+/// (checked at both ends; coordinates are linear along a span) are sampled with no wrapping or
+/// clamping, the others with the style's addressing.
+struct TexturedSpans<'a, D, T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool>
+{
+    target: &'a mut D,
+    addressed: TexturedShader<T, A, M, BILINEAR, MODULATE>,
+    direct: TexturedShader<T, Direct, M, BILINEAR, MODULATE>,
+    /// Coordinates (in 2^-46 texels) below these, and not negative, need no addressing.
+    limits: [i64; 2],
+}
+
+impl<'a, D, T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool>
+    TexturedSpans<'a, D, T, A, M, BILINEAR, MODULATE>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+    A: Axis,
+    D: DrawTarget<Color = T::Color>,
+{
+    #[inline(always)]
+    fn new(
+        target: &'a mut D,
+        texture: T,
+        coordinates: Planes<2, COORDINATE_BITS>,
+        (u, v): (A, A),
+        tint: Option<Planes<M>>,
+    ) -> Self {
+        let size = texture.size();
+        // Bilinear also reads the texel to the right and below.
+        let reach = |side: u32| {
+            let texels = if BILINEAR { side - 1 } else { side };
+            i64::from(texels) << COORDINATE_BITS
+        };
+        let addressed = Sampler {
+            texture,
+            u,
+            v,
+            du: u.step(coordinates.dx[0]),
+            dv: v.step(coordinates.dx[1]),
+        };
+        let direct = Sampler {
+            texture,
+            u: Direct,
+            v: Direct,
+            du: coordinates.dx[0],
+            dv: coordinates.dx[1],
+        };
+        Self {
+            target,
+            addressed: TexturedShader::new(addressed, coordinates, tint),
+            direct: TexturedShader::new(direct, coordinates, tint),
+            limits: [reach(size.width), reach(size.height)],
+        }
+    }
+
+    #[inline(always)]
+    fn draw(mut self, triangle: &Triangle, rule: FillRule) -> Result<(), D::Error> {
+        let clip = self.target.bounding_box();
+        walk(triangle, rule, &clip, &mut self)
+    }
+}
+
+impl<D, T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> SpanSink
+    for TexturedSpans<'_, D, T, A, M, BILINEAR, MODULATE>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+    A: Axis,
+    D: DrawTarget<Color = T::Color>,
+{
+    type Error = D::Error;
+
+    #[inline(always)]
+    fn span(&mut self, span: Span) -> Result<(), D::Error> {
+        let planes = &self.direct.coordinates;
+        let start = planes.at_exact(span.x, span.y);
+        let steps = i64::from(span.len) - 1;
+        let inside = (0..2).all(|k| {
+            let end = steps
+                .checked_mul(planes.dx[k])
+                .and_then(|d| d.checked_add(start[k]));
+            end.is_some_and(|end| {
+                let limit = 0..self.limits[k];
+                limit.contains(&start[k]) && limit.contains(&end)
+            })
+        });
+        if inside {
+            shade_span(&self.direct, span, self.target)
+        } else {
+            shade_span(&self.addressed, span, self.target)
         }
     }
 }

@@ -30,6 +30,44 @@ pub(crate) trait Axis: Copy {
     fn linear(self, coord: Self::Coord) -> (u32, u32, u32);
 }
 
+/// Addressing of coordinates known to stay inside the texture (the caller checks each span's
+/// ends): texels are the integer parts, with no wrapping or clamping at all.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Direct;
+
+impl Axis for Direct {
+    type Coord = i64;
+
+    #[inline(always)]
+    fn coord(self, value: i64) -> i64 {
+        value
+    }
+
+    #[inline(always)]
+    fn step(self, gradient: i64) -> i64 {
+        gradient
+    }
+
+    #[inline(always)]
+    fn advance(self, coord: i64, step: i64) -> i64 {
+        coord.wrapping_add(step)
+    }
+
+    // Coordinates are not negative here; a logical shift tells the compiler the texel fits
+    // 18 bits, which saves widening it again for indexing.
+    #[inline(always)]
+    fn nearest(self, coord: i64) -> u32 {
+        ((coord as u64) >> COORDINATE_BITS) as u32
+    }
+
+    #[inline(always)]
+    fn linear(self, coord: i64) -> (u32, u32, u32) {
+        let texel = ((coord as u64) >> COORDINATE_BITS) as u32;
+        let fraction = (coord >> (COORDINATE_BITS - 16)) as u32 & 0xFFFF;
+        (texel, texel + 1, fraction)
+    }
+}
+
 /// Repeat addressing of a power-of-two side: the coordinate is kept as a `u64` with its
 /// integer part (modulo 2^16) in the top 16 bits, so wrapping is free and extracting the texel
 /// is a constant shift and a mask.
