@@ -219,8 +219,11 @@ where
         // targets check the row first.
         let (row, column) = (y as u32 as usize, x as u32);
         let row_inside = usize::BITS >= 64 || row < self.height;
-        if row_inside && u64::from(column) + u64::from(len) <= self.width as u64 {
-            let start = row * self.width + column as usize;
+        // Sides are below 2^31 (checked in `new`); saying so lets the compiler see that
+        // `start + len` cannot overflow, leaving the slice bound as the only check.
+        let width = self.width as u32;
+        if row_inside && u64::from(column) + u64::from(len) <= u64::from(width) {
+            let start = row * width as usize + column as usize;
             self.pixels.get_mut(start..start + len as usize)
         } else {
             None
