@@ -5,7 +5,8 @@
 //! cargo run --release --example perf -- MODE SCENE FRAMES
 //! ```
 //!
-//! MODE: `flat`, `gouraud`, `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
+//! MODE: `flat`, `gouraud`, `gouraud-z` and `flat-z` (through a 16-bit depth buffer cleared
+//! each frame; each triangle nearer than the ones before, so every pixel passes), `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
 //! over each triangle's bounding box, clamped), `tex-modulated` (the same, bilinear, times
 //! Gouraud colours), `tex-nearest-repeat`, `tex-bilinear-repeat` (the texture tiled across
 //! the screen, rotated: repeat by masking), `tex-nearest-clamp` (tiled coordinates, clamped),
@@ -34,6 +35,7 @@ use fixed::types::I16F16;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
     coverage::{for_each_span, Span},
+    depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Texels, Wrap},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
@@ -41,6 +43,8 @@ use trirast::{
 const MODES: &[&str] = &[
     "flat",
     "gouraud",
+    "gouraud-z",
+    "flat-z",
     "tex-nearest",
     "tex-bilinear",
     "tex-modulated",
@@ -142,6 +146,12 @@ where
         "flat" => flat_frame(scene, target),
         "gouraud" => gouraud_frame(scene, target),
         "eg-flat" => eg_flat_frame(scene, target),
+        "gouraud-z" | "flat-z" => {
+            let size = target.bounding_box().size;
+            let mut depths = vec![0u16; (size.width * size.height) as usize];
+            let mut zbuffer = DepthBuffer::new(&mut depths, size.width, size.height).unwrap();
+            depth_frame(scene, mode == "gouraud-z", &mut zbuffer, target);
+        }
         "fill-baseline" | "coverage" => {
             // Only for counting: the timed loop fills precomputed spans directly.
             for (span, color) in frame_spans(scene) {
@@ -193,6 +203,39 @@ where
             .into_styled(GouraudStyle::new(t.vertex_colors))
             .draw(target)
             .unwrap();
+    }
+}
+
+/// Draws through a depth buffer, cleared first; each triangle is nearer than those before it.
+#[inline(never)]
+fn depth_frame<D>(scene: &[SceneTriangle], gouraud: bool, zbuffer: &mut DepthBuffer, target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    zbuffer.clear(u16::MAX);
+    let mut layered = DepthTarget::new(target, zbuffer).unwrap();
+    // Depths fall by `gap` from one triangle to the next and by less than that across each.
+    let gap = (60_000 / scene.len().max(1)).max(1) as u32;
+    for (k, t) in scene.iter().enumerate() {
+        let [a, b, c] = t.vertices;
+        let near = 60_000u32.saturating_sub(k as u32 * gap);
+        let depths = [
+            near,
+            near.saturating_sub(gap / 3),
+            near.saturating_sub(gap * 2 / 3),
+        ]
+        .map(|d| d as u16);
+        let triangle = Triangle::new(a, b, c);
+        if gouraud {
+            layered
+                .draw(&triangle, depths, &GouraudStyle::new(t.vertex_colors))
+                .unwrap();
+        } else {
+            layered
+                .draw(&triangle, depths, &FlatStyle::new(t.color))
+                .unwrap();
+        }
     }
 }
 

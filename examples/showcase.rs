@@ -5,6 +5,8 @@
 //! cargo run --release --example showcase -- DIR     # writes DIR/*.png
 //! ```
 
+#[path = "common/cube.rs"]
+mod cube;
 #[path = "common/scenes.rs"]
 mod scenes;
 
@@ -14,13 +16,15 @@ use embedded_graphics::{
     mono_font::{ascii::FONT_6X10, MonoTextStyle},
     pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb888},
     prelude::*,
-    primitives::{PrimitiveStyle, Triangle as EgTriangle},
+    primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
     text::Text,
 };
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay};
 use fixed::types::I16F16;
 use tinybmp::Bmp;
 use trirast::{
+    depth::{DepthBuffer, DepthTarget},
+    mesh::{Cull, Mesh},
     shading::Fragment,
     texture::{Filter, ImageTexels, Texels},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
@@ -76,6 +80,11 @@ const SCENES: &[Scene] = &[
         name: "textured_cube",
         about: "an isometric crate: Rgb565 texels, bilinear, modulated by per-vertex light",
         render: textured_cube,
+    },
+    Scene {
+        name: "depth_cube",
+        about: "a textured, lit cube through a 16-bit depth buffer (right: the depth buffer)",
+        render: depth_cube,
     },
     Scene {
         name: "overdraw",
@@ -422,6 +431,56 @@ fn textured_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     }
     let mut display = SimulatorDisplay::new(Size::new(w, h));
     blit_565(&pixels, w, &mut display);
+    (display, OutputSettingsBuilder::new().scale(2).build())
+}
+
+/// The spinning cube of `examples/cube.rs`, one frame, beside its depth buffer.
+fn depth_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (200u32, 160u32);
+    let texels: Vec<Rgb565> = (0..cube::TEXTURE * cube::TEXTURE)
+        .map(|i| {
+            let [r, g, b] = cube::texel(i % cube::TEXTURE, i / cube::TEXTURE);
+            Rgb888::new(r, g, b).into()
+        })
+        .collect();
+    let side = cube::TEXTURE as u32;
+    let texture = Texels::new(&texels, side, side).unwrap();
+    let mut pixels = vec![Rgb565::new(3, 8, 12); (w * h) as usize];
+    let mut depths = vec![u16::MAX; (w * h) as usize];
+    let mut fb = Framebuffer::new(&mut pixels, w, h).unwrap();
+    let mut zbuffer = DepthBuffer::new(&mut depths, w, h).unwrap();
+    let area = Rectangle::new(Point::zero(), Size::new(w, h));
+    let vertices = cube::vertices(5, 24, area);
+    let mesh = Mesh::new(&vertices, &cube::TRIANGLES).unwrap();
+    let mut scene = DepthTarget::new(&mut fb, &mut zbuffer).unwrap();
+    mesh.draw_with_depth(&mut scene, Cull::Clockwise, |_, corners| {
+        let gray = |l: u8| Rgb565::new(l >> 3, l >> 2, l >> 3);
+        TextureStyle::new(texture, corners.map(|v| v.uv))
+            .with_filter(Filter::Bilinear)
+            .with_modulation(corners.map(|v| gray(v.light)))
+    })
+    .unwrap();
+    let mut display = SimulatorDisplay::new(Size::new(2 * w + 8, h));
+    blit_565(&pixels, w, &mut display);
+    // Depths as gray: near is bright; the cleared background stays black.
+    let (near, far) = depths
+        .iter()
+        .filter(|&&d| d != u16::MAX)
+        .fold((u16::MAX, 0), |(lo, hi), &d| (lo.min(d), hi.max(d)));
+    for (i, &d) in depths.iter().enumerate() {
+        let level = if d == u16::MAX {
+            0
+        } else {
+            255 - (u32::from(d - near) * 200 / u32::from((far - near).max(1))) as u8
+        };
+        let p = Point::new(
+            (w + 8) as i32 + (i as u32 % w) as i32,
+            (i as u32 / w) as i32,
+        );
+        Pixel(p, Rgb888::new(level, level, level))
+            .draw(&mut display)
+            .unwrap();
+    }
     (display, OutputSettingsBuilder::new().scale(2).build())
 }
 

@@ -37,6 +37,20 @@ pub enum Error {
         /// Height given.
         height: u32,
     },
+    /// A depth buffer's size differs from its target's.
+    DepthBufferSize {
+        /// The depth buffer's width and height.
+        buffer: embedded_graphics::geometry::Size,
+        /// The target's.
+        target: embedded_graphics::geometry::Size,
+    },
+    /// A mesh triangle refers to a vertex that is not there.
+    MeshIndex {
+        /// The triangle's position in the index list.
+        triangle: usize,
+        /// The index past the end of the vertices.
+        index: u16,
+    },
     /// A texture side is zero or beyond [`MAX_TEXTURE_SIDE`](crate::texture::MAX_TEXTURE_SIDE),
     /// or an image gives no texels.
     TextureSize {
@@ -59,6 +73,15 @@ impl fmt::Display for Error {
             Self::DimensionsTooLarge { width, height } => {
                 write!(f, "dimensions {width}x{height} are too large to address")
             }
+            Self::DepthBufferSize { buffer, target } => write!(
+                f,
+                "depth buffer is {}x{} but its target is {}x{}",
+                buffer.width, buffer.height, target.width, target.height
+            ),
+            Self::MeshIndex { triangle, index } => write!(
+                f,
+                "mesh triangle {triangle} refers to vertex {index}, past the last vertex"
+            ),
             Self::TextureSize { width, height } => write!(
                 f,
                 "texture size {width}x{height} is not usable: sides must be 1 to 32768"

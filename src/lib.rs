@@ -63,9 +63,11 @@
 )]
 
 pub mod coverage;
+pub mod depth;
 mod error;
 pub mod geometry;
 pub mod interpolate;
+pub mod mesh;
 mod setup;
 pub mod shading;
 pub mod target;

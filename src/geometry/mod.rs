@@ -1,5 +1,7 @@
-//! Geometry: shapes without style.
+//! Geometry: shapes without style, and the viewport mapping onto pixels.
 
 mod triangle;
+mod viewport;
 
 pub use triangle::{Orientation, Triangle};
+pub use viewport::Viewport;

@@ -1,16 +1,12 @@
 //! Flat (single colour) filling.
 
-use embedded_graphics::{
-    draw_target::DrawTarget,
-    geometry::Dimensions,
-    pixelcolor::PixelColor,
-    primitives::{Rectangle, StyledDimensions, StyledDrawable},
-};
+use embedded_graphics::{pixelcolor::PixelColor, primitives::Rectangle};
 
-use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
-    geometry::Triangle,
+use super::{
+    paint::{drawable_style, PaintVisitor, SolidPainter},
+    TriangleStyle,
 };
+use crate::{coverage::FillRule, geometry::Triangle};
 
 /// Fills a triangle with one colour.
 ///
@@ -84,41 +80,24 @@ impl<C> FlatStyle<C> {
     }
 }
 
-impl<C: PixelColor> StyledDrawable<FlatStyle<C>> for Triangle {
+impl<C: PixelColor> TriangleStyle for FlatStyle<C> {
     type Color = C;
-    type Output = ();
 
     #[inline]
-    fn draw_styled<D>(&self, style: &FlatStyle<C>, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        let clip = target.bounding_box();
-        let mut sink = FillSpans {
-            target,
-            color: style.color,
-        };
-        walk(self, style.fill_rule, &clip, &mut sink)
+    fn fill_rule(&self) -> FillRule {
+        self.fill_rule
     }
-}
-
-/// Sends each span to `fill_solid`, inlined into the edge walk.
-struct FillSpans<'a, D, C> {
-    target: &'a mut D,
-    color: C,
-}
-
-impl<D: DrawTarget<Color = C>, C: PixelColor> SpanSink for FillSpans<'_, D, C> {
-    type Error = D::Error;
 
     #[inline(always)]
-    fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        self.target.fill_solid(&span.rectangle(), self.color)
+    fn paint<V: PaintVisitor<C>>(
+        &self,
+        _triangle: &Triangle,
+        _window: &Rectangle,
+        visitor: V,
+    ) -> Option<V::Output> {
+        // Each span goes to `fill_solid`, inlined into the edge walk.
+        Some(visitor.visit(SolidPainter(self.color)))
     }
 }
 
-impl<C: PixelColor> StyledDimensions<FlatStyle<C>> for Triangle {
-    fn styled_bounding_box(&self, _style: &FlatStyle<C>) -> Rectangle {
-        self.bounding_box()
-    }
-}
+drawable_style!([C: PixelColor] FlatStyle<C>);

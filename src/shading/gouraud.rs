@@ -1,14 +1,11 @@
 //! Gouraud shading: colours interpolated between the vertices.
 
-use embedded_graphics::{
-    draw_target::DrawTarget,
-    geometry::{Dimensions, Point},
-    primitives::{Rectangle, StyledDimensions, StyledDrawable},
-};
+use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 use super::{
-    spans::{draw_pixels, PlanesShader},
-    ChannelColor,
+    paint::{drawable_style, PaintVisitor, ShaderPainter},
+    spans::PlanesShader,
+    ChannelColor, TriangleStyle,
 };
 use crate::{coverage::FillRule, geometry::Triangle};
 
@@ -135,45 +132,42 @@ const BAYER: [[u32; 4]; 4] = {
     table
 };
 
-impl<C, const N: usize> StyledDrawable<GouraudStyle<C>> for Triangle
+impl<C, const N: usize> TriangleStyle for GouraudStyle<C>
 where
     C: ChannelColor<Channels = [u8; N]>,
 {
     type Color = C;
-    type Output = ();
 
     #[inline]
-    fn draw_styled<D>(&self, style: &GouraudStyle<C>, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        let values = style
+    fn fill_rule(&self) -> FillRule {
+        self.fill_rule
+    }
+
+    #[inline(always)]
+    fn paint<V: PaintVisitor<C>>(
+        &self,
+        triangle: &Triangle,
+        window: &Rectangle,
+        visitor: V,
+    ) -> Option<V::Output> {
+        let values = self
             .colors
             .map(|c| c.channels().map(|v| i64::from(v) << 16));
-        let rule = style.fill_rule;
-        let origin = target.bounding_box().top_left;
-        if style.dither {
+        let origin = window.top_left;
+        if self.dither {
             let dithered = |p: Point, v: [u32; N]| {
                 let threshold = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
                 C::from_channels(v.map(|c| (c.wrapping_add(threshold) >> 16) as u8))
             };
-            match PlanesShader::new(self, values, 0, origin, dithered) {
-                Some(shader) => draw_pixels(self, rule, target, &shader),
-                None => Ok(()),
-            }
+            let shader = PlanesShader::new(triangle, values, 0, origin, dithered)?;
+            Some(visitor.visit(ShaderPainter(shader)))
         } else {
             // Half a level of bias turns truncation into rounding to nearest.
             let rounded = |_: Point, v: [u32; N]| C::from_channels(v.map(|c| (c >> 16) as u8));
-            match PlanesShader::new(self, values, 1 << 15, origin, rounded) {
-                Some(shader) => draw_pixels(self, rule, target, &shader),
-                None => Ok(()),
-            }
+            let shader = PlanesShader::new(triangle, values, 1 << 15, origin, rounded)?;
+            Some(visitor.visit(ShaderPainter(shader)))
         }
     }
 }
 
-impl<C: ChannelColor> StyledDimensions<GouraudStyle<C>> for Triangle {
-    fn styled_bounding_box(&self, _style: &GouraudStyle<C>) -> Rectangle {
-        self.bounding_box()
-    }
-}
+drawable_style!([C, const N: usize] GouraudStyle<C> where C: ChannelColor<Channels = [u8; N]>);

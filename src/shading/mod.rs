@@ -6,6 +6,8 @@
 mod channels;
 mod flat;
 mod gouraud;
+#[doc(hidden)]
+pub mod paint;
 mod shader;
 mod spans;
 mod textured;
@@ -13,5 +15,6 @@ mod textured;
 pub use channels::ChannelColor;
 pub use flat::FlatStyle;
 pub use gouraud::GouraudStyle;
+pub use paint::TriangleStyle;
 pub use shader::{Fragment, ShaderStyle};
 pub use textured::TextureStyle;

@@ -1,14 +1,13 @@
 //! Per-pixel shading by a user function of interpolated attributes.
 
-use embedded_graphics::{
-    draw_target::DrawTarget,
-    geometry::{Dimensions, Point},
-    pixelcolor::PixelColor,
-    primitives::{Rectangle, StyledDimensions, StyledDrawable},
-};
+use embedded_graphics::{geometry::Point, pixelcolor::PixelColor, primitives::Rectangle};
 use fixed::types::I16F16;
 
-use super::spans::{draw_pixels, PlanesShader};
+use super::{
+    paint::{drawable_style, PaintVisitor, ShaderPainter},
+    spans::PlanesShader,
+    TriangleStyle,
+};
 use crate::{coverage::FillRule, geometry::Triangle};
 
 /// What a shader sees at one pixel: its position and the `N` attributes interpolated there.
@@ -119,36 +118,35 @@ impl<const N: usize, F> ShaderStyle<N, F> {
     }
 }
 
-impl<C, const N: usize, F> StyledDrawable<ShaderStyle<N, F>> for Triangle
+impl<C, const N: usize, F> TriangleStyle for ShaderStyle<N, F>
 where
     C: PixelColor,
     F: Fn(Fragment<N>) -> C,
 {
     type Color = C;
-    type Output = ();
 
     #[inline]
-    fn draw_styled<D>(&self, style: &ShaderStyle<N, F>, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        let values = style.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
+    fn fill_rule(&self) -> FillRule {
+        self.fill_rule
+    }
+
+    #[inline(always)]
+    fn paint<V: PaintVisitor<C>>(
+        &self,
+        triangle: &Triangle,
+        window: &Rectangle,
+        visitor: V,
+    ) -> Option<V::Output> {
+        let values = self.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
         let shade = |position, raw: [u32; N]| {
-            (style.shader)(Fragment {
+            (self.shader)(Fragment {
                 position,
                 values: raw.map(|v| I16F16::from_bits(v as i32)),
             })
         };
-        let origin = target.bounding_box().top_left;
-        match PlanesShader::new(self, values, 0, origin, shade) {
-            Some(shader) => draw_pixels(self, style.fill_rule, target, &shader),
-            None => Ok(()),
-        }
+        let shader = PlanesShader::new(triangle, values, 0, window.top_left, shade)?;
+        Some(visitor.visit(ShaderPainter(shader)))
     }
 }
 
-impl<const N: usize, F> StyledDimensions<ShaderStyle<N, F>> for Triangle {
-    fn styled_bounding_box(&self, _style: &ShaderStyle<N, F>) -> Rectangle {
-        self.bounding_box()
-    }
-}
+drawable_style!([C, const N: usize, F] ShaderStyle<N, F> where C: PixelColor, F: Fn(Fragment<N>) -> C);

@@ -2,11 +2,7 @@
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
-use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
-    interpolate::Planes,
-    Triangle,
-};
+use crate::{coverage::Span, interpolate::Planes, Triangle};
 
 /// Computes colours pixel by pixel along a span, by additions.
 pub(crate) trait PixelShader {
@@ -25,41 +21,6 @@ pub(crate) trait PixelShader {
     /// into the target's fill loop (measured: bilinear filtering), which would otherwise cost
     /// a call and a trip through memory per pixel.
     const BUFFERED: bool = false;
-}
-
-/// Draws `triangle` pixel by pixel with `shader`: each span is one `fill_contiguous` call.
-#[inline(always)]
-pub(crate) fn draw_pixels<D, S>(
-    triangle: &Triangle,
-    rule: FillRule,
-    target: &mut D,
-    shader: &S,
-) -> Result<(), D::Error>
-where
-    D: DrawTarget,
-    S: PixelShader<Color = D::Color>,
-{
-    let clip = target.bounding_box();
-    let mut sink = ShadeSpans { target, shader };
-    walk(triangle, rule, &clip, &mut sink)
-}
-
-struct ShadeSpans<'a, D, S> {
-    target: &'a mut D,
-    shader: &'a S,
-}
-
-impl<D, S> SpanSink for ShadeSpans<'_, D, S>
-where
-    D: DrawTarget,
-    S: PixelShader<Color = D::Color>,
-{
-    type Error = D::Error;
-
-    #[inline(always)]
-    fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        shade_span(self.shader, span, self.target)
-    }
 }
 
 /// Shades one span with `shader` into `target`.

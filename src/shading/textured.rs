@@ -1,19 +1,16 @@
 //! Texture mapping: texels sampled at interpolated texture coordinates, optionally tinted by
 //! Gouraud-interpolated colours.
 
-use embedded_graphics::{
-    draw_target::DrawTarget,
-    geometry::{Dimensions, Point},
-    primitives::{Rectangle, StyledDimensions, StyledDrawable},
-};
+use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 use fixed::types::I16F16;
 
 use super::{
+    paint::{drawable_style, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
-    ChannelColor,
+    ChannelColor, TriangleStyle,
 };
 use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
+    coverage::{FillRule, Span},
     geometry::Triangle,
     interpolate::Planes,
     texture::{
@@ -247,56 +244,52 @@ impl<T: TexelSource> TextureStyle<T> {
     }
 }
 
-impl<T, const M: usize> StyledDrawable<TextureStyle<T>> for Triangle
+impl<T, const M: usize> TriangleStyle for TextureStyle<T>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
 {
     type Color = T::Color;
-    type Output = ();
 
     #[inline]
-    fn draw_styled<D>(&self, style: &TextureStyle<T>, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = T::Color>,
-    {
-        let window = target.bounding_box();
-        let Some(coordinates) = coordinate_planes(self, style, &window) else {
-            return Ok(());
-        };
-        let size = style.texture.size();
-        let tint = match style.modulation {
-            Some(colors) => match tint_planes(self, colors, &window) {
-                Some(planes) => Some(planes),
-                None => return Ok(()),
-            },
+    fn fill_rule(&self) -> FillRule {
+        self.fill_rule
+    }
+
+    #[inline(always)]
+    fn paint<V: PaintVisitor<T::Color>>(
+        &self,
+        triangle: &Triangle,
+        window: &Rectangle,
+        visitor: V,
+    ) -> Option<V::Output> {
+        let coordinates = coordinate_planes(triangle, self, window)?;
+        let size = self.texture.size();
+        let tint = match self.modulation {
+            Some(colors) => Some(tint_planes(triangle, colors, window)?),
             None => None,
         };
-        match style.wrap {
+        Some(match self.wrap {
             Wrap::Clamp => {
                 let axes = (Clamped::new(size.width), Clamped::new(size.height));
-                draw_with_axes(self, style, target, coordinates, axes, tint)
+                paint_with_axes(self, visitor, coordinates, axes, tint)
             }
             Wrap::Repeat => {
                 if let (Some(u), Some(v)) = (
                     Pow2Repeated::new(size.width),
                     Pow2Repeated::new(size.height),
                 ) {
-                    draw_with_axes(self, style, target, coordinates, (u, v), tint)
+                    paint_with_axes(self, visitor, coordinates, (u, v), tint)
                 } else {
                     let axes = (Repeated::new(size.width), Repeated::new(size.height));
-                    draw_with_axes(self, style, target, coordinates, axes, tint)
+                    paint_with_axes(self, visitor, coordinates, axes, tint)
                 }
             }
-        }
+        })
     }
 }
 
-impl<T: TexelSource> StyledDimensions<TextureStyle<T>> for Triangle {
-    fn styled_bounding_box(&self, _style: &TextureStyle<T>) -> Rectangle {
-        self.bounding_box()
-    }
-}
+drawable_style!([T, const M: usize] TextureStyle<T> where T: TexelSource + Copy, T::Color: ChannelColor<Channels = [u8; M]>);
 
 /// The planes of the texture coordinates, biased so that truncating them rounds as the filter
 /// needs, and lifted so that they never fall below the exact coordinate.
@@ -357,89 +350,61 @@ where
 
 /// Dispatches on filter and modulation, the choices that change the per-pixel work.
 #[inline(always)]
-fn draw_with_axes<T, A, D, const M: usize>(
-    triangle: &Triangle,
+fn paint_with_axes<T, A, V, const M: usize>(
     style: &TextureStyle<T>,
-    target: &mut D,
+    visitor: V,
     coordinates: Planes<2, COORDINATE_BITS>,
     axes: (A, A),
     tint: Option<Planes<M>>,
-) -> Result<(), D::Error>
+) -> V::Output
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
     A: Axis,
-    D: DrawTarget<Color = T::Color>,
+    V: PaintVisitor<T::Color>,
 {
-    let rule = style.fill_rule;
     let texture = style.texture;
     match (style.filter, tint) {
-        (Filter::Nearest, None) => {
-            let spans = TexturedSpans::<_, _, _, M, false, false>::new(
-                target,
-                texture,
-                coordinates,
-                axes,
-                None,
-            );
-            spans.draw(triangle, rule)
-        }
-        (Filter::Bilinear, None) => {
-            let spans = TexturedSpans::<_, _, _, M, true, false>::new(
-                target,
-                texture,
-                coordinates,
-                axes,
-                None,
-            );
-            spans.draw(triangle, rule)
-        }
-        (Filter::Nearest, Some(tint)) => {
-            let spans = TexturedSpans::<_, _, _, M, false, true>::new(
-                target,
-                texture,
-                coordinates,
-                axes,
-                Some(tint),
-            );
-            spans.draw(triangle, rule)
-        }
-        (Filter::Bilinear, Some(tint)) => {
-            let spans = TexturedSpans::<_, _, _, M, true, true>::new(
-                target,
-                texture,
-                coordinates,
-                axes,
-                Some(tint),
-            );
-            spans.draw(triangle, rule)
-        }
+        (Filter::Nearest, None) => visitor.visit(TexturedPainter::<_, _, M, false, false>::new(
+            texture,
+            coordinates,
+            axes,
+            None,
+        )),
+        (Filter::Bilinear, None) => visitor.visit(TexturedPainter::<_, _, M, true, false>::new(
+            texture,
+            coordinates,
+            axes,
+            None,
+        )),
+        (Filter::Nearest, Some(tint)) => visitor.visit(
+            TexturedPainter::<_, _, M, false, true>::new(texture, coordinates, axes, Some(tint)),
+        ),
+        (Filter::Bilinear, Some(tint)) => visitor.visit(
+            TexturedPainter::<_, _, M, true, true>::new(texture, coordinates, axes, Some(tint)),
+        ),
     }
 }
 
-/// The span sink of a textured triangle: spans whose coordinates stay inside the texture
-/// (checked at both ends; coordinates are linear along a span) are sampled with no wrapping or
-/// clamping, the others with the style's addressing.
-struct TexturedSpans<'a, D, T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool>
-{
-    target: &'a mut D,
+/// The painter of a textured triangle: runs whose coordinates stay inside the texture (checked
+/// at both ends; coordinates are linear along a row) are sampled with no wrapping or clamping,
+/// the others with the style's addressing.
+struct TexturedPainter<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
     addressed: TexturedShader<T, A, M, BILINEAR, MODULATE>,
     direct: TexturedShader<T, Direct, M, BILINEAR, MODULATE>,
     /// Coordinates (in 2^-46 texels) below these, and not negative, need no addressing.
     limits: [i64; 2],
 }
 
-impl<'a, D, T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool>
-    TexturedSpans<'a, D, T, A, M, BILINEAR, MODULATE>
+impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool>
+    TexturedPainter<T, A, M, BILINEAR, MODULATE>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
     A: Axis,
-    D: DrawTarget<Color = T::Color>,
 {
     #[inline(always)]
     fn new(
-        target: &'a mut D,
         texture: T,
         coordinates: Planes<2, COORDINATE_BITS>,
         (u, v): (A, A),
@@ -466,35 +431,30 @@ where
             dv: coordinates.dx[1],
         };
         Self {
-            target,
             addressed: TexturedShader::new(addressed, coordinates, tint),
             direct: TexturedShader::new(direct, coordinates, tint),
             limits: [reach(size.width), reach(size.height)],
         }
     }
-
-    #[inline(always)]
-    fn draw(mut self, triangle: &Triangle, rule: FillRule) -> Result<(), D::Error> {
-        let clip = self.target.bounding_box();
-        walk(triangle, rule, &clip, &mut self)
-    }
 }
 
-impl<D, T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> SpanSink
-    for TexturedSpans<'_, D, T, A, M, BILINEAR, MODULATE>
+impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> Painter
+    for TexturedPainter<T, A, M, BILINEAR, MODULATE>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
     A: Axis,
-    D: DrawTarget<Color = T::Color>,
 {
-    type Error = D::Error;
+    type Color = T::Color;
 
     #[inline(always)]
-    fn span(&mut self, span: Span) -> Result<(), D::Error> {
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
         let planes = &self.direct.coordinates;
-        let start = planes.at_exact(span.x, span.y);
-        let steps = i64::from(span.len) - 1;
+        let start = planes.at_exact(run.x, run.y);
+        let steps = i64::from(run.len) - 1;
         let inside = (0..2).all(|k| {
             let end = steps
                 .checked_mul(planes.dx[k])
@@ -505,9 +465,9 @@ where
             })
         });
         if inside {
-            shade_span(&self.direct, span, self.target)
+            shade_span(&self.direct, run, target)
         } else {
-            shade_span(&self.addressed, span, self.target)
+            shade_span(&self.addressed, run, target)
         }
     }
 }

@@ -1,0 +1,145 @@
+//! A spinning, lit cube in integer arithmetic only (no floating point, no allocation), shared
+//! by the host examples and the firmware so that both render the very same frames.
+//!
+//! The 3D part (rotation, perspective, lighting) lives here, in the example: the crate takes
+//! over at normalised device coordinates, through `Viewport`.
+#![allow(dead_code)]
+
+use embedded_graphics::{geometry::Point, primitives::Rectangle};
+use fixed::types::I16F16;
+use trirast::geometry::Viewport;
+
+/// Fixed point with 16 fraction bits, in `i64` so products need no care.
+const ONE: i64 = 1 << 16;
+
+/// One vertex as drawn: on screen, with depth, light (0..=255) and texture corner.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct CubeVertex {
+    pub position: Point,
+    pub depth: u16,
+    pub light: u8,
+    /// Texture coordinates in texels (the texture is `TEXTURE` x `TEXTURE`).
+    pub uv: [I16F16; 2],
+}
+
+impl trirast::mesh::MeshVertex for CubeVertex {
+    fn position(&self) -> Point {
+        self.position
+    }
+
+    fn depth(&self) -> u16 {
+        self.depth
+    }
+}
+
+/// Texture side the cube's texture coordinates assume.
+pub const TEXTURE: i32 = 64;
+
+/// Six faces, two triangles each, wound counter-clockwise seen from outside (so, on screen,
+/// front faces wind counter-clockwise and back faces clockwise).
+pub const TRIANGLES: [[u16; 3]; 12] = {
+    let mut t = [[0; 3]; 12];
+    let mut face = 0;
+    while face < 6 {
+        let base = (face * 4) as u16;
+        t[face * 2] = [base, base + 1, base + 2];
+        t[face * 2 + 1] = [base, base + 2, base + 3];
+        face += 1;
+    }
+    t
+};
+
+/// Corners of each face (x, y, z in -1..=1), counter-clockwise seen from outside.
+const FACES: [[[i64; 3]; 4]; 6] = [
+    [[-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], // front (+z)
+    [[1, -1, -1], [-1, -1, -1], [-1, 1, -1], [1, 1, -1]], // back (-z)
+    [[1, -1, 1], [1, -1, -1], [1, 1, -1], [1, 1, 1]], // right (+x)
+    [[-1, -1, -1], [-1, -1, 1], [-1, 1, 1], [-1, 1, -1]], // left (-x)
+    [[-1, 1, 1], [1, 1, 1], [1, 1, -1], [-1, 1, -1]], // top (+y)
+    [[-1, -1, -1], [1, -1, -1], [1, -1, 1], [-1, -1, 1]], // bottom (-y)
+];
+
+/// Texture corners of each face's four vertices.
+const CORNERS: [[i32; 2]; 4] = [[0, TEXTURE], [TEXTURE, TEXTURE], [TEXTURE, 0], [0, 0]];
+
+/// sin of `turn` / 65536 of a full turn, 16.16. Odd polynomial on a quarter turn, error below
+/// 2^-16 (a 9th-order Taylor series in fixed point).
+pub fn sin(turn: i64) -> i64 {
+    let t = turn.rem_euclid(1 << 16);
+    // Fold onto -quarter..=quarter, where the series converges fast.
+    let t = if t > 3 << 14 { t - (1 << 16) } else { t };
+    let t = if t > 1 << 14 { (1 << 15) - t } else { t };
+    // x = t * 2π / 65536, in 16.16: 2π * 65536 = 411775.
+    let x = (t * 411_775) >> 16;
+    let x2 = (x * x) >> 16;
+    // x (1 - x²/6 (1 - x²/20 (1 - x²/42 (1 - x²/72)))).
+    let mut r = ONE - x2 / 72;
+    r = ONE - ((x2 * r) >> 16) / 42;
+    r = ONE - ((x2 * r) >> 16) / 20;
+    r = ONE - ((x2 * r) >> 16) / 6;
+    (x * r) >> 16
+}
+
+/// cos of `turn` / 65536 of a turn, 16.16.
+pub fn cos(turn: i64) -> i64 {
+    sin(turn + (1 << 14))
+}
+
+/// The cube's 24 vertices for frame `frame` of `frames` (one full turn about y, half a turn
+/// about x), drawn into `area`.
+pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
+    let viewport = Viewport::new(area);
+    let turn = i64::from(frame) * 65_536 / i64::from(frames.max(1));
+    let (sa, ca) = (sin(turn), cos(turn));
+    let (sb, cb) = (sin(turn / 2 + 3000), cos(turn / 2 + 3000));
+    // Aspect ratio: NDC spans the area's width and height alike, so x shrinks by h / w.
+    let aspect = i64::from(area.size.height) * ONE / i64::from(area.size.width.max(1));
+    // A point light above, left and in front of the cube, in view space.
+    let light = [-2 * ONE, 2 * ONE, -ONE];
+    let mut out = [CubeVertex {
+        position: Point::zero(),
+        depth: 0,
+        light: 0,
+        uv: [I16F16::ZERO; 2],
+    }; 24];
+    for (face, corners) in FACES.iter().enumerate() {
+        for (k, corner) in corners.iter().enumerate() {
+            // Rotate about y by a, then about x by b; the cube's half side is 0.8.
+            let [x, y, z] = corner.map(|c| c * ONE * 4 / 5);
+            let (x, z) = ((x * ca + z * sa) >> 16, (z * ca - x * sa) >> 16);
+            let (y, z) = ((y * cb - z * sb) >> 16, (y * sb + z * cb) >> 16);
+            // Camera 3.5 units away looking down -z; perspective with focal length 1.8.
+            let depth = 7 * ONE / 2 - z;
+            let project = |v: i64| v * (ONE * 9 / 5) / depth;
+            let ndc_x = (project(x) * aspect) >> 16;
+            let ndc_y = project(y);
+            // Linear depth: view distance 2 maps to NDC -1, distance 5 to 1.
+            let ndc_z = (depth - 7 * ONE / 2) * 2 / 3;
+            let (position, depth16) = viewport.project([ndc_x, ndc_y, ndc_z].map(|v| {
+                I16F16::from_bits(v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32)
+            }));
+            // Light falls off with the squared distance to the light.
+            let d = [x - light[0], y - light[1], -z - light[2]];
+            let d2 = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) >> 16;
+            let level = (3200 * ONE / (d2 + ONE) - 100).clamp(40, 255);
+            out[face * 4 + k] = CubeVertex {
+                position,
+                depth: depth16,
+                light: level as u8,
+                uv: CORNERS[k].map(|t| I16F16::from_bits(t << 16)),
+            };
+        }
+    }
+    out
+}
+
+/// A procedural `TEXTURE` x `TEXTURE` texture: framed checker tiles.
+pub fn texel(x: i32, y: i32) -> [u8; 3] {
+    let edge = x < 3 || y < 3 || x >= TEXTURE - 3 || y >= TEXTURE - 3;
+    let check = ((x / 8) + (y / 8)) % 2 == 0;
+    match (edge, check) {
+        (true, _) => [40, 40, 48],
+        (false, true) => [230, 180, 60],
+        (false, false) => [200, 90, 40],
+    }
+}

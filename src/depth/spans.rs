@@ -1,0 +1,160 @@
+//! The depth-tested span pass: spans are tested and written first, then their passing runs
+//! painted.
+
+use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
+
+use super::{DepthBuffer, DepthTest};
+use crate::{
+    coverage::{walk, FillRule, Span, SpanSink},
+    geometry::Triangle,
+    interpolate::Planes,
+    shading::paint::{PaintVisitor, Painter},
+};
+
+/// Receives a style's painter and walks the triangle through the depth test.
+pub(super) struct DepthVisitor<'a, 'b, D> {
+    pub(super) target: &'a mut D,
+    pub(super) buffer: &'a mut DepthBuffer<'b>,
+    pub(super) triangle: &'a Triangle,
+    pub(super) depths: [u16; 3],
+    pub(super) rule: FillRule,
+    pub(super) window: Rectangle,
+    pub(super) test: DepthTest,
+    pub(super) write: bool,
+}
+
+impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
+    type Output = Result<(), D::Error>;
+
+    #[inline(always)]
+    fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
+        // Depths as 16.16 with half a unit of bias: truncation rounds to nearest.
+        let values = self.depths.map(|d| [i64::from(d) << 16]);
+        let Some(depth) = Planes::new_in(self.triangle.vertices, values, 1 << 15, &self.window)
+        else {
+            return Ok(());
+        };
+        let (flip, slack) = self.test.comparison();
+        let mut sink = DepthSpans {
+            target: self.target,
+            buffer: self.buffer,
+            painter,
+            depth,
+            origin: (self.window.top_left.x, self.window.top_left.y),
+            flip,
+            slack,
+            write: self.write,
+        };
+        walk(self.triangle, self.rule, &self.window, &mut sink)
+    }
+}
+
+/// Tests, writes and paints each span.
+struct DepthSpans<'a, 'b, D, P> {
+    target: &'a mut D,
+    buffer: &'a mut DepthBuffer<'b>,
+    painter: P,
+    depth: Planes<1>,
+    /// The window's top-left corner: the buffer's (0, 0).
+    origin: (i32, i32),
+    /// The test as `(depth ^ flip) < (stored ^ flip) + slack`.
+    flip: u16,
+    slack: u32,
+    write: bool,
+}
+
+impl<D, P> SpanSink for DepthSpans<'_, '_, D, P>
+where
+    D: DrawTarget,
+    P: Painter<Color = D::Color>,
+{
+    type Error = D::Error;
+
+    #[inline(always)]
+    fn span(&mut self, span: Span) -> Result<(), D::Error> {
+        // Spans lie in the window, which the buffer covers: the offsets are in range.
+        let x = span.x.wrapping_sub(self.origin.0) as u32;
+        let y = span.y.wrapping_sub(self.origin.1) as u32;
+        let Some(stored) = self.buffer.run_mut(x, y, span.len) else {
+            return Ok(());
+        };
+        let start = self.depth.at(span.x, span.y)[0];
+        let step = self.depth.step[0];
+        // In i32 the comparison needs no unsigned tricks: both sides stay below 2^17.
+        let (flip, slack) = (i32::from(self.flip), self.slack as i32);
+        let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;
+
+        // Depths are linear along the span, so their extremes lie at its ends (`last` is the
+        // value the stepping below reaches, wrapping alike). When even the worst of them
+        // passes against the best stored depth, all pixels pass: one reduction over the
+        // stored depths decides it, and the span is written and painted without per-pixel
+        // tests. This is the common case (a surface in front of what is there).
+        let last = start.wrapping_add(step.wrapping_mul(span.len - 1));
+        let worst = ((start >> 16) as i32 ^ flip).max((last >> 16) as i32 ^ flip);
+        let best = nearest_stored(stored, flip as u16);
+        let all = worst < i32::from(best) + slack || {
+            // Otherwise test every pixel, still without early exits (vectorised).
+            let mut all = true;
+            let mut depth = start;
+            for &old in stored.iter() {
+                all &= passes((depth >> 16) as i32, old);
+                depth = depth.wrapping_add(step);
+            }
+            all
+        };
+        if all {
+            if self.write {
+                write_depths(stored, start, step);
+            }
+            return self.painter.paint(span, self.target);
+        }
+
+        // Mixed: paint each run of passing pixels.
+        let mut run_start = None;
+        let mut depth = start;
+        for (i, old) in stored.iter_mut().enumerate() {
+            let value = (depth >> 16) as i32;
+            depth = depth.wrapping_add(step);
+            if passes(value, *old) {
+                if self.write {
+                    *old = value as u16;
+                }
+                run_start.get_or_insert(i);
+            } else if let Some(first) = run_start.take() {
+                let run = Span {
+                    x: span.x.wrapping_add(first as i32),
+                    y: span.y,
+                    len: (i - first) as u32,
+                };
+                self.painter.paint(run, self.target)?;
+            }
+        }
+        if let Some(first) = run_start {
+            let run = Span {
+                x: span.x.wrapping_add(first as i32),
+                y: span.y,
+                len: span.len - first as u32,
+            };
+            self.painter.paint(run, self.target)?;
+        }
+        Ok(())
+    }
+}
+
+/// The smallest of `stored ^ flip`: the best depth there when `flip` maps the test to "less".
+#[inline(always)]
+fn nearest_stored(stored: &[u16], flip: u16) -> u16 {
+    stored
+        .iter()
+        .fold(u16::MAX, |best, &old| best.min(old ^ flip))
+}
+
+/// Stores the depths of a span, `start` stepping by `step` (16.16), rounded down.
+#[inline(always)]
+fn write_depths(stored: &mut [u16], start: u32, step: u32) {
+    let mut depth = start;
+    for old in stored.iter_mut() {
+        *old = (depth >> 16) as u16;
+        depth = depth.wrapping_add(step);
+    }
+}

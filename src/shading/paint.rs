@@ -1,0 +1,215 @@
+//! How styles hand their per-triangle painters to the passes that draw them: plain (each span
+//! straight to the target) or depth-tested (spans broken where the test fails).
+//!
+//! A style sets up a [`Painter`] once per triangle (colour planes, texture addressing, ...) and
+//! passes it to a [`PaintVisitor`], which walks the triangle's spans and asks the painter to
+//! paint runs of them. The visitor pattern keeps every combination monomorphic: the painter's
+//! concrete type, which differs per style option (filter, wrap, ...), reaches the span loop.
+
+use embedded_graphics::{draw_target::DrawTarget, pixelcolor::PixelColor, primitives::Rectangle};
+
+use super::spans::{shade_span, PixelShader};
+use crate::{
+    coverage::{walk, FillRule, Span, SpanSink},
+    geometry::Triangle,
+};
+
+/// Paints runs of covered pixels, each within one row, for one triangle.
+#[doc(hidden)]
+pub trait Painter {
+    /// The colour painted.
+    type Color: PixelColor;
+
+    /// Paints `run` (inside the target) into `target`.
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Self::Color>;
+}
+
+/// Receives a triangle's painter and draws with it.
+#[doc(hidden)]
+pub trait PaintVisitor<C: PixelColor> {
+    /// What drawing returns.
+    type Output;
+
+    /// Draws with `painter`.
+    fn visit<P: Painter<Color = C>>(self, painter: P) -> Self::Output;
+}
+
+mod sealed {
+    pub trait Sealed {}
+}
+
+/// The crate's triangle styles: [`FlatStyle`](crate::FlatStyle),
+/// [`GouraudStyle`](crate::GouraudStyle), [`TextureStyle`](crate::TextureStyle) and
+/// [`ShaderStyle`](crate::ShaderStyle). Each draws a [`Triangle`] through `into_styled`, and
+/// with a depth test through [`DepthTarget::draw`](crate::depth::DepthTarget::draw).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use embedded_graphics::prelude::*;
+/// use trirast::{shading::TriangleStyle, FillRule, FlatStyle};
+///
+/// fn rule_of<S: TriangleStyle>(style: &S) -> FillRule {
+///     style.fill_rule()
+/// }
+/// assert_eq!(rule_of(&FlatStyle::new(Rgb565::RED)), FillRule::TopLeft);
+/// ```
+pub trait TriangleStyle: sealed::Sealed {
+    /// The colour drawn.
+    type Color: PixelColor;
+
+    /// Which boundary pixels belong to the triangle.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::BinaryColor;
+    /// use trirast::{shading::TriangleStyle, FillRule, FlatStyle};
+    ///
+    /// let style = FlatStyle::new(BinaryColor::On).with_fill_rule(FillRule::Inclusive);
+    /// assert_eq!(style.fill_rule(), FillRule::Inclusive);
+    /// ```
+    fn fill_rule(&self) -> FillRule;
+
+    /// Sets up this style's painter for `triangle` drawn into `window` and hands it to
+    /// `visitor`; `None` for degenerate triangles.
+    #[doc(hidden)]
+    fn paint<V: PaintVisitor<Self::Color>>(
+        &self,
+        triangle: &Triangle,
+        window: &Rectangle,
+        visitor: V,
+    ) -> Option<V::Output>;
+}
+
+/// Implements [`TriangleStyle`]'s seal and embedded-graphics' drawing traits for a style.
+macro_rules! drawable_style {
+    ([$($generics:tt)*] $style:ty $(where $($bounds:tt)*)?) => {
+        impl<$($generics)*> $crate::shading::paint::Sealed for $style $(where $($bounds)*)? {}
+
+        impl<$($generics)*> embedded_graphics::primitives::StyledDrawable<$style>
+            for $crate::geometry::Triangle
+        $(where $($bounds)*)?
+        {
+            type Color = <$style as $crate::shading::TriangleStyle>::Color;
+            type Output = ();
+
+            #[inline]
+            fn draw_styled<D>(&self, style: &$style, target: &mut D) -> Result<(), D::Error>
+            where
+                D: embedded_graphics::draw_target::DrawTarget<Color = Self::Color>,
+            {
+                $crate::shading::paint::draw_plain(self, style, target)
+            }
+        }
+
+        impl<$($generics)*> embedded_graphics::primitives::StyledDimensions<$style>
+            for $crate::geometry::Triangle
+        $(where $($bounds)*)?
+        {
+            fn styled_bounding_box(&self, _style: &$style) -> embedded_graphics::primitives::Rectangle {
+                embedded_graphics::geometry::Dimensions::bounding_box(self)
+            }
+        }
+    };
+}
+pub(crate) use drawable_style;
+pub(crate) use sealed::Sealed;
+
+/// Draws `triangle` with `style` straight into `target`: each span painted as it comes.
+#[inline(always)]
+pub(crate) fn draw_plain<S, D>(
+    triangle: &Triangle,
+    style: &S,
+    target: &mut D,
+) -> Result<(), D::Error>
+where
+    S: TriangleStyle,
+    D: DrawTarget<Color = S::Color>,
+{
+    let window = target.bounding_box();
+    let visitor = PlainVisitor {
+        target,
+        triangle,
+        rule: style.fill_rule(),
+        window,
+    };
+    style.paint(triangle, &window, visitor).unwrap_or(Ok(()))
+}
+
+/// Walks the triangle and paints every span.
+struct PlainVisitor<'a, D> {
+    target: &'a mut D,
+    triangle: &'a Triangle,
+    rule: FillRule,
+    window: Rectangle,
+}
+
+impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
+    type Output = Result<(), D::Error>;
+
+    #[inline(always)]
+    fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
+        let mut sink = PaintSpans {
+            target: self.target,
+            painter,
+        };
+        walk(self.triangle, self.rule, &self.window, &mut sink)
+    }
+}
+
+/// Paints each span as the walk emits it.
+struct PaintSpans<'a, D, P> {
+    target: &'a mut D,
+    painter: P,
+}
+
+impl<D, P> SpanSink for PaintSpans<'_, D, P>
+where
+    D: DrawTarget,
+    P: Painter<Color = D::Color>,
+{
+    type Error = D::Error;
+
+    #[inline(always)]
+    fn span(&mut self, span: Span) -> Result<(), D::Error> {
+        self.painter.paint(span, self.target)
+    }
+}
+
+/// Paints runs with one colour, through `fill_solid`.
+pub(crate) struct SolidPainter<C>(pub(crate) C);
+
+impl<C: PixelColor> Painter for SolidPainter<C> {
+    type Color = C;
+
+    #[inline(always)]
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        target.fill_solid(&run.rectangle(), self.0)
+    }
+}
+
+/// Paints runs pixel by pixel with a [`PixelShader`], through `fill_contiguous`.
+pub(crate) struct ShaderPainter<S>(pub(crate) S);
+
+impl<S: PixelShader> Painter for ShaderPainter<S> {
+    type Color = S::Color;
+
+    #[inline(always)]
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = S::Color>,
+    {
+        shade_span(&self.0, run, target)
+    }
+}
