@@ -6,14 +6,18 @@
 //! ```
 //!
 //! MODE: `flat`, `gouraud`, `gouraud-z` and `flat-z` (through a 16-bit depth buffer cleared
-//! each frame; each triangle nearer than the ones before, so every pixel passes), `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
+//! each frame; each triangle nearer than the ones before, so every pixel passes), `band` (the
+//! `gouraud-z` frame as a band-rendered scene: triangles pushed to a `band::Scene` each frame,
+//! rendered in 16-row bands with a depth band, each band copied to the framebuffer with one
+//! `fill_contiguous`; same image as `gouraud-z`), `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
 //! over each triangle's bounding box, clamped), `tex-modulated` (the same, bilinear, times
 //! Gouraud colours), `tex-nearest-repeat`, `tex-bilinear-repeat` (the texture tiled across
 //! the screen, rotated: repeat by masking), `tex-nearest-clamp` (tiled coordinates, clamped),
 //! `tex-nearest-odd` (a 63x63 texture tiled: repeat by modulo) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
 //! scene and framebuffer), `fill-baseline` (the flat spans, precomputed, filled by
 //! `slice::fill`: no covering at all), `coverage` (edge walking alone, nothing drawn).
-//! SCENE: `big`, `small`, `mesh`. The last line printed is
+//! SCENE: `big`, `small`, `mesh`, `scene200` (200 overlapping triangles of up to a few thousand
+//! pixels). The last line printed is
 //! `pixels=<pixels drawn> triangles=<triangles drawn>` over all frames; the line before it gives
 //! overdraw and gaps of one frame. Counting runs once, outside the timed frames, so instruction
 //! counts are best taken as the difference between two FRAMES values.
@@ -34,6 +38,7 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
+    band::{Bands, Scene as BandScene, SceneStyle},
     coverage::{for_each_span, Span},
     depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Texels, Wrap},
@@ -45,6 +50,7 @@ const MODES: &[&str] = &[
     "gouraud",
     "gouraud-z",
     "flat-z",
+    "band",
     "tex-nearest",
     "tex-bilinear",
     "tex-modulated",
@@ -152,6 +158,23 @@ where
             let mut zbuffer = DepthBuffer::new(&mut depths, size.width, size.height).unwrap();
             depth_frame(scene, mode == "gouraud-z", &mut zbuffer, target);
         }
+        "band" => BAND_MEMORY.with_borrow_mut(|memory| {
+            // Allocated once: a 5,000-triangle scene is half a megabyte, which a frame
+            // should not pay to allocate and clear.
+            let (list, band, depth_band) = memory.get_or_insert_with(|| {
+                let width = WIDTH as usize * BAND_ROWS as usize;
+                let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+                (
+                    Box::new(BandScene::new(screen)),
+                    vec![Rgb565::BLACK; width],
+                    vec![0u16; width],
+                )
+            });
+            let mut bands = Bands::new(band, WIDTH, BAND_ROWS)
+                .and_then(|b| b.with_depth(depth_band))
+                .unwrap();
+            band_frame(scene, list, &mut bands, target);
+        }),
         "fill-baseline" | "coverage" => {
             // Only for counting: the timed loop fills precomputed spans directly.
             for (span, color) in frame_spans(scene) {
@@ -215,17 +238,9 @@ where
 {
     zbuffer.clear(u16::MAX);
     let mut layered = DepthTarget::new(target, zbuffer).unwrap();
-    // Depths fall by `gap` from one triangle to the next and by less than that across each.
-    let gap = (60_000 / scene.len().max(1)).max(1) as u32;
     for (k, t) in scene.iter().enumerate() {
         let [a, b, c] = t.vertices;
-        let near = 60_000u32.saturating_sub(k as u32 * gap);
-        let depths = [
-            near,
-            near.saturating_sub(gap / 3),
-            near.saturating_sub(gap * 2 / 3),
-        ]
-        .map(|d| d as u16);
+        let depths = layered_depths(k, scene.len());
         let triangle = Triangle::new(a, b, c);
         if gouraud {
             layered
@@ -237,6 +252,61 @@ where
                 .unwrap();
         }
     }
+}
+
+/// Rows per band in the `band` mode.
+const BAND_ROWS: u32 = 16;
+
+/// Scene capacity in the `band` mode: the largest scene (`small`) fits.
+const BAND_CAPACITY: usize = 5000;
+
+/// What the `band` mode's frames share: the scene, the band and the depth band.
+type BandMemory = (
+    Box<BandScene<'static, Rgb565, BAND_CAPACITY>>,
+    Vec<Rgb565>,
+    Vec<u16>,
+);
+
+thread_local! {
+    static BAND_MEMORY: std::cell::RefCell<Option<BandMemory>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Depth of triangle `k` of `count` in the depth modes: each triangle nearer than those before,
+/// depths falling by `gap` from one triangle to the next and by less than that across each.
+fn layered_depths(k: usize, count: usize) -> [u16; 3] {
+    let gap = (60_000 / count.max(1)).max(1) as u32;
+    let near = 60_000u32.saturating_sub(k as u32 * gap);
+    [
+        near,
+        near.saturating_sub(gap / 3),
+        near.saturating_sub(gap * 2 / 3),
+    ]
+    .map(|d| d as u16)
+}
+
+/// The `gouraud-z` frame, band-rendered: the scene is built and rendered every frame.
+#[inline(never)]
+fn band_frame<D>(
+    scene: &[SceneTriangle],
+    list: &mut BandScene<'static, Rgb565, BAND_CAPACITY>,
+    bands: &mut Bands<'_, Rgb565>,
+    target: &mut D,
+) where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    list.clear();
+    for (k, t) in scene.iter().enumerate() {
+        let [a, b, c] = t.vertices;
+        let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
+        list.push_with_depth(
+            Triangle::new(a, b, c),
+            layered_depths(k, scene.len()),
+            style,
+        )
+        .unwrap();
+    }
+    bands.render(list, Rgb565::BLACK, target).unwrap();
 }
 
 #[inline(never)]
@@ -291,7 +361,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let usage = || {
         eprintln!(
-            "usage: perf MODE SCENE FRAMES\n  MODE: {}\n  SCENE: big | small | mesh",
+            "usage: perf MODE SCENE FRAMES\n  MODE: {}\n  SCENE: big | small | mesh | scene200",
             MODES.join(" | ")
         );
         ExitCode::from(2)

@@ -51,6 +51,22 @@ pub enum Error {
         /// The index past the end of the vertices.
         index: u16,
     },
+    /// A scene is full: it holds `capacity` triangles already.
+    SceneFull {
+        /// The scene's capacity.
+        capacity: usize,
+    },
+    /// A band of zero rows.
+    BandHeight,
+    /// Bands narrower or wider than the screen they render.
+    BandWidth {
+        /// The bands' width.
+        band: u32,
+        /// The screen's.
+        screen: u32,
+    },
+    /// A scene with depth-tested triangles rendered by bands without a depth band.
+    BandDepth,
     /// A texture side is zero or beyond [`MAX_TEXTURE_SIDE`](crate::texture::MAX_TEXTURE_SIDE),
     /// or an image gives no texels.
     TextureSize {
@@ -81,6 +97,20 @@ impl fmt::Display for Error {
             Self::MeshIndex { triangle, index } => write!(
                 f,
                 "mesh triangle {triangle} refers to vertex {index}, past the last vertex"
+            ),
+            Self::SceneFull { capacity } => {
+                write!(
+                    f,
+                    "scene is full: it holds its capacity of {capacity} triangles"
+                )
+            }
+            Self::BandHeight => write!(f, "bands need at least one row"),
+            Self::BandWidth { band, screen } => {
+                write!(f, "bands are {band} pixels wide but the screen is {screen}")
+            }
+            Self::BandDepth => write!(
+                f,
+                "the scene has depth-tested triangles but the bands have no depth band"
             ),
             Self::TextureSize { width, height } => write!(
                 f,

@@ -62,16 +62,20 @@ pub enum Scene {
     Small,
     /// A watertight 2,000-triangle mesh covering the whole screen exactly once.
     Mesh,
+    /// 200 overlapping triangles of a few hundred to a few thousand pixels each, as a 3D
+    /// scene of small objects gives (the band-rendering benchmark).
+    Scene200,
 }
 
 impl Scene {
-    pub const ALL: [Scene; 3] = [Scene::Big, Scene::Small, Scene::Mesh];
+    pub const ALL: [Scene; 4] = [Scene::Big, Scene::Small, Scene::Mesh, Scene::Scene200];
 
     pub fn parse(name: &str) -> Option<Self> {
         match name {
             "big" => Some(Scene::Big),
             "small" => Some(Scene::Small),
             "mesh" => Some(Scene::Mesh),
+            "scene200" => Some(Scene::Scene200),
             _ => None,
         }
     }
@@ -81,6 +85,7 @@ impl Scene {
             Scene::Big => "big",
             Scene::Small => "small",
             Scene::Mesh => "mesh",
+            Scene::Scene200 => "scene200",
         }
     }
 
@@ -90,6 +95,7 @@ impl Scene {
             Scene::Big => big(f),
             Scene::Small => small(f),
             Scene::Mesh => mesh(40, 25, f),
+            Scene::Scene200 => scene200(f),
         }
     }
 }
@@ -99,6 +105,16 @@ fn big(mut f: impl FnMut(SceneTriangle)) {
     for _ in 0..40 {
         let c = Point::new(rng.range(40, 280), rng.range(30, 210));
         let mut p = || Point::new(c.x + rng.range(-140, 140), c.y + rng.range(-110, 110));
+        let v = [p(), p(), p()];
+        f(triangle(&mut rng, v));
+    }
+}
+
+fn scene200(mut f: impl FnMut(SceneTriangle)) {
+    let mut rng = Rng(0x200);
+    for _ in 0..200 {
+        let c = Point::new(rng.range(0, WIDTH as i32), rng.range(0, HEIGHT as i32));
+        let mut p = || Point::new(c.x + rng.range(-45, 45), c.y + rng.range(-45, 45));
         let v = [p(), p(), p()];
         f(triangle(&mut rng, v));
     }

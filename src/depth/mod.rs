@@ -37,6 +37,7 @@ mod spans;
 use embedded_graphics::{
     draw_target::DrawTarget,
     geometry::{Point, Size},
+    primitives::Rectangle,
 };
 
 use crate::{geometry::Triangle, shading::TriangleStyle, Error};
@@ -391,6 +392,23 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
         S: TriangleStyle<Color = D::Color>,
     {
         let window = self.target.bounding_box();
+        self.draw_in(triangle, depths, style, &window)
+    }
+
+    /// [`DepthTarget::draw`] with interpolation set up for `setup` (the whole screen, when the
+    /// target is a band of it), so that colours and depths do not depend on the part drawn.
+    #[inline]
+    pub(crate) fn draw_in<S>(
+        &mut self,
+        triangle: &Triangle,
+        depths: [u16; 3],
+        style: &S,
+        setup: &Rectangle,
+    ) -> Result<(), D::Error>
+    where
+        S: TriangleStyle<Color = D::Color>,
+    {
+        let window = self.target.bounding_box();
         let visitor = spans::DepthVisitor {
             target: self.target,
             buffer: self.buffer,
@@ -398,10 +416,11 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
             depths,
             rule: style.fill_rule(),
             window,
+            setup: *setup,
             test: self.test,
             write: self.write,
         };
-        style.paint(triangle, &window, visitor).unwrap_or(Ok(()))
+        style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
     }
 
     /// The target, for drawing without depth (text overlays, say).

@@ -18,7 +18,10 @@ pub(super) struct DepthVisitor<'a, 'b, D> {
     pub(super) triangle: &'a Triangle,
     pub(super) depths: [u16; 3],
     pub(super) rule: FillRule,
+    /// Where spans are drawn (the target's box, which the buffer covers).
     pub(super) window: Rectangle,
+    /// What interpolation is set up for (the whole screen when drawing a band of it).
+    pub(super) setup: Rectangle,
     pub(super) test: DepthTest,
     pub(super) write: bool,
 }
@@ -30,7 +33,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
     fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
         // Depths as 16.16 with half a unit of bias: truncation rounds to nearest.
         let values = self.depths.map(|d| [i64::from(d) << 16]);
-        let Some(depth) = Planes::new_in(self.triangle.vertices, values, 1 << 15, &self.window)
+        let Some(depth) = Planes::new_in(self.triangle.vertices, values, 1 << 15, &self.setup)
         else {
             return Ok(());
         };

@@ -135,13 +135,30 @@ where
     D: DrawTarget<Color = S::Color>,
 {
     let window = target.bounding_box();
+    draw_plain_in(triangle, style, target, &window)
+}
+
+/// [`draw_plain`] with interpolation set up for `setup` (the whole screen, when `target` is a
+/// band of it), so that colours do not depend on the part of the screen drawn.
+#[inline(always)]
+pub(crate) fn draw_plain_in<S, D>(
+    triangle: &Triangle,
+    style: &S,
+    target: &mut D,
+    setup: &Rectangle,
+) -> Result<(), D::Error>
+where
+    S: TriangleStyle,
+    D: DrawTarget<Color = S::Color>,
+{
+    let window = target.bounding_box();
     let visitor = PlainVisitor {
         target,
         triangle,
         rule: style.fill_rule(),
         window,
     };
-    style.paint(triangle, &window, visitor).unwrap_or(Ok(()))
+    style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
 }
 
 /// Walks the triangle and paints every span.

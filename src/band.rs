@@ -1,0 +1,563 @@
+//! Band rendering: whole scenes on chips without memory for a whole frame.
+//!
+//! A [`Scene`] is a display list of triangles with a fixed capacity (a `heapless` vector inside,
+//! no allocation). [`Bands`] renders it into a buffer of a few rows (and, for depth-tested
+//! triangles, a depth band of the same rows), band after band from the top, and hands each
+//! finished band to the display with one `fill_contiguous` call, which is how SPI displays take
+//! a window of pixels.
+//!
+//! Every triangle is binned by its rows once per frame and drawn only into the bands it
+//! touches. Its interpolation is set up for the whole screen, so each band gets exactly the
+//! pixels, colours and depths a full-frame render would give it: band rendering is bit for bit
+//! the same image, for any band height from one row to the full screen.
+//!
+//! # Memory
+//!
+//! For a 320 x 240 `Rgb565` screen: a 16-row band is 320 x 16 x 2 = 10,240 bytes, its depth band
+//! another 10,240; a 200-triangle scene is 200 x `size_of::<SceneTriangle<Rgb565, _>>()`: 92
+//! bytes each on 32-bit microcontrollers (18,400 in all; 104 bytes on a 64-bit host). The full
+//! frame and its depth buffer would be 153,600 bytes each.
+//!
+//! # Examples
+//!
+//! ```
+//! use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+//! use trirast::{band::{Bands, Scene, SceneStyle}, FlatStyle, Framebuffer, GouraudStyle, Triangle};
+//!
+//! let screen = Rectangle::new(Point::zero(), Size::new(64, 48));
+//! let mut scene: Scene<Rgb565, 8> = Scene::new(screen);
+//! let t = Triangle::new(Point::new(2, 2), Point::new(60, 10), Point::new(20, 46));
+//! scene.push(t, SceneStyle::Gouraud(GouraudStyle::new([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE])))?;
+//! scene.push_with_depth(t, [100, 200, 300], SceneStyle::Flat(FlatStyle::new(Rgb565::WHITE)))?;
+//!
+//! // Eight rows at a time, with a depth band.
+//! let mut band = [Rgb565::BLACK; 64 * 8];
+//! let mut depth_band = [0u16; 64 * 8];
+//! let mut bands = Bands::new(&mut band, 64, 8)?.with_depth(&mut depth_band)?;
+//!
+//! // Any DrawTarget takes the bands; here a framebuffer stands in for the display.
+//! let mut frame = [Rgb565::BLACK; 64 * 48];
+//! let mut display = Framebuffer::new(&mut frame, 64, 48)?;
+//! bands.render(&scene, Rgb565::BLACK, &mut display).unwrap();
+//! assert_eq!(display.pixel(Point::new(20, 20)), Some(Rgb565::WHITE));
+//! # Ok::<(), trirast::Error>(())
+//! ```
+
+use core::fmt;
+
+use embedded_graphics::{
+    draw_target::{DrawTarget, DrawTargetExt},
+    geometry::{Point, Size},
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+};
+
+use crate::{
+    depth::{DepthBuffer, DepthTarget, DepthTest},
+    geometry::Triangle,
+    shading::{paint::draw_plain_in, ChannelColor, FlatStyle, GouraudStyle, TextureStyle},
+    target::{Framebuffer, StoredPixel},
+    texture::{TexelSource, Texels},
+    Error,
+};
+
+/// How a scene triangle is filled: the crate's styles, with textures of type `T`
+/// ([`Texels`] unless chosen).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use trirast::{band::SceneStyle, FlatStyle};
+///
+/// use trirast::texture::Texels;
+///
+/// let style: SceneStyle<Gray8, Texels<Gray8>> = SceneStyle::Flat(FlatStyle::new(Gray8::new(200)));
+/// assert!(matches!(style, SceneStyle::Flat(_)));
+/// ```
+#[derive(Copy, Clone, Debug)]
+pub enum SceneStyle<C: PixelColor, T: TexelSource<Color = C>> {
+    /// One colour.
+    Flat(FlatStyle<C>),
+    /// Colours interpolated between the vertices.
+    Gouraud(GouraudStyle<C>),
+    /// A borrowed texture.
+    Texture(TextureStyle<T>),
+}
+
+/// One triangle of a [`Scene`]: its shape, depths if depth-tested, style, and the rows it
+/// covers on screen.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+/// use trirast::{band::{Scene, SceneStyle}, FlatStyle, Triangle};
+///
+/// let mut scene: Scene<Gray8, 4> = Scene::new(Rectangle::new(Point::zero(), Size::new(32, 32)));
+/// let t = Triangle::new(Point::new(0, 5), Point::new(9, 5), Point::new(0, 14));
+/// scene.push(t, SceneStyle::Flat(FlatStyle::new(Gray8::WHITE)))?;
+/// assert_eq!(scene.triangles()[0].rows, 5..15);
+/// # Ok::<(), trirast::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct SceneTriangle<C: PixelColor, T: TexelSource<Color = C>> {
+    /// The triangle.
+    pub triangle: Triangle,
+    /// Depths per vertex, for triangles drawn through the depth test.
+    pub depths: Option<[u16; 3]>,
+    /// How it is filled.
+    pub style: SceneStyle<C, T>,
+    /// The screen rows its bounding box covers (empty when it is off screen).
+    pub rows: core::ops::Range<i32>,
+}
+
+/// A display list of up to `N` triangles for [`Bands`] to render, drawn in the order pushed.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+/// use trirast::{band::{Scene, SceneStyle}, Error, FlatStyle, Triangle};
+///
+/// let mut scene: Scene<Rgb565, 1> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+/// let t = Triangle::new(Point::new(0, 0), Point::new(7, 0), Point::new(0, 7));
+/// let style = SceneStyle::Flat(FlatStyle::new(Rgb565::RED));
+/// scene.push(t, style)?;
+/// assert_eq!(scene.push(t, style), Err(Error::SceneFull { capacity: 1 }));
+/// # Ok::<(), trirast::Error>(())
+/// ```
+pub struct Scene<'a, C: PixelColor, const N: usize, T: TexelSource<Color = C> = Texels<'a, C>> {
+    screen: Rectangle,
+    triangles: heapless::Vec<SceneTriangle<C, T>, N>,
+    test: DepthTest,
+    /// Textures are borrowed for `'a` (the default texture type names it).
+    borrow: core::marker::PhantomData<&'a ()>,
+}
+
+impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T> {
+    /// An empty scene for a screen covering `screen`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::band::Scene;
+    ///
+    /// let scene: Scene<Rgb565, 200> = Scene::new(Rectangle::new(Point::zero(), Size::new(320, 240)));
+    /// assert!(scene.triangles().is_empty());
+    /// ```
+    #[must_use]
+    pub fn new(screen: Rectangle) -> Self {
+        Self {
+            screen,
+            triangles: heapless::Vec::new(),
+            test: DepthTest::Less,
+            borrow: core::marker::PhantomData,
+        }
+    }
+
+    /// The same scene, depth-tested triangles drawn with `test` (default [`DepthTest::Less`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::Scene, depth::DepthTest};
+    ///
+    /// let scene: Scene<Rgb565, 4> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)))
+    ///     .with_depth_test(DepthTest::LessOrEqual);
+    /// assert_eq!(scene.depth_test(), DepthTest::LessOrEqual);
+    /// ```
+    #[must_use]
+    pub fn with_depth_test(mut self, test: DepthTest) -> Self {
+        self.test = test;
+        self
+    }
+
+    /// The depth test of depth-tested triangles.
+    ///
+    /// # Examples
+    ///
+    /// See [`Scene::with_depth_test`].
+    #[must_use]
+    pub fn depth_test(&self) -> DepthTest {
+        self.test
+    }
+
+    /// The screen area.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::band::Scene;
+    ///
+    /// let screen = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// assert_eq!(Scene::<Rgb565, 1>::new(screen).screen(), screen);
+    /// ```
+    #[must_use]
+    pub fn screen(&self) -> Rectangle {
+        self.screen
+    }
+
+    /// Adds a triangle drawn without a depth test.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::SceneFull`] when the scene already holds `N` triangles.
+    ///
+    /// # Examples
+    ///
+    /// See [`Scene`].
+    pub fn push(&mut self, triangle: Triangle, style: SceneStyle<C, T>) -> Result<(), Error> {
+        self.push_item(triangle, None, style)
+    }
+
+    /// Adds a triangle drawn through the depth test, with `depths` per vertex.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::SceneFull`] when the scene already holds `N` triangles.
+    ///
+    /// # Examples
+    ///
+    /// See the [module documentation](self).
+    pub fn push_with_depth(
+        &mut self,
+        triangle: Triangle,
+        depths: [u16; 3],
+        style: SceneStyle<C, T>,
+    ) -> Result<(), Error> {
+        self.push_item(triangle, Some(depths), style)
+    }
+
+    fn push_item(
+        &mut self,
+        triangle: Triangle,
+        depths: Option<[u16; 3]>,
+        style: SceneStyle<C, T>,
+    ) -> Result<(), Error> {
+        let rows = covered_rows(&triangle, &self.screen);
+        self.triangles
+            .push(SceneTriangle {
+                triangle,
+                depths,
+                style,
+                rows,
+            })
+            .map_err(|_| Error::SceneFull { capacity: N })
+    }
+
+    /// Empties the scene for the next frame.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let mut scene: Scene<Rgb565, 2> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// scene.push(Triangle::new(Point::zero(), Point::new(4, 0), Point::new(0, 4)), SceneStyle::Flat(FlatStyle::new(Rgb565::RED)))?;
+    /// scene.clear();
+    /// assert!(scene.triangles().is_empty());
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn clear(&mut self) {
+        self.triangles.clear();
+    }
+
+    /// The triangles, in drawing order.
+    ///
+    /// # Examples
+    ///
+    /// See [`SceneTriangle`].
+    #[must_use]
+    pub fn triangles(&self) -> &[SceneTriangle<C, T>] {
+        &self.triangles
+    }
+}
+
+impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> fmt::Debug for Scene<'_, C, N, T>
+where
+    C: fmt::Debug,
+    T: fmt::Debug,
+{
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Scene")
+            .field("screen", &self.screen)
+            .field("triangles", &self.triangles.len())
+            .field("capacity", &N)
+            .finish()
+    }
+}
+
+/// The rows of `screen` the triangle's bounding box covers.
+fn covered_rows(triangle: &Triangle, screen: &Rectangle) -> core::ops::Range<i32> {
+    if triangle.is_degenerate() {
+        return 0..0;
+    }
+    let ys = triangle.vertices.map(|p| i64::from(p.y));
+    let (top, bottom) = (
+        ys.into_iter().min().unwrap_or(0),
+        ys.into_iter().max().unwrap_or(0),
+    );
+    let screen_top = i64::from(screen.top_left.y);
+    let screen_bottom = screen_top + i64::from(screen.size.height);
+    // Rows are pixel rows: the bottom vertex's row is included (inclusive fill rule).
+    let (first, last) = (top.max(screen_top), (bottom + 1).min(screen_bottom));
+    if first >= last {
+        0..0
+    } else {
+        // Both within the screen, whose rows are i32.
+        first as i32..last as i32
+    }
+}
+
+/// What band rendering can fail with: a setup error, or the display's.
+///
+/// # Examples
+///
+/// ```
+/// use trirast::{band::BandError, Error};
+///
+/// let e: BandError<core::convert::Infallible> = BandError::Setup(Error::SceneFull { capacity: 1 });
+/// assert!(matches!(e, BandError::Setup(_)));
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum BandError<E> {
+    /// The bands do not fit the scene's screen.
+    Setup(Error),
+    /// The display target failed.
+    Target(E),
+}
+
+/// A band buffer of a few rows (and optionally a depth band) that renders a [`Scene`] into a
+/// display target band by band.
+///
+/// `S` is how pixels are stored, as in [`Framebuffer`]: the colour itself, or raw `u16` for an
+/// SPI display's byte order.
+///
+/// # Examples
+///
+/// See the [module documentation](self).
+#[derive(Debug)]
+pub struct Bands<'b, C, S = C> {
+    pixels: &'b mut [S],
+    depths: Option<&'b mut [u16]>,
+    width: u32,
+    rows: u32,
+    far: u16,
+    color: core::marker::PhantomData<C>,
+}
+
+impl<'b, C, S> Bands<'b, C, S>
+where
+    C: PixelColor,
+    S: StoredPixel<C>,
+{
+    /// A band of `rows` rows of `width` pixels over `pixels`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BandHeight`] for zero rows; [`Error::BufferLength`] unless
+    /// `pixels.len() == width * rows`; [`Error::DimensionsTooLarge`] beyond `i32` sides.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use trirast::{band::Bands, Error};
+    ///
+    /// let mut band = [Rgb565::default(); 320 * 16];
+    /// assert!(Bands::new(&mut band, 320, 16).is_ok());
+    /// assert_eq!(Bands::new(&mut band, 320, 0).unwrap_err(), Error::BandHeight);
+    /// ```
+    pub fn new(pixels: &'b mut [S], width: u32, rows: u32) -> Result<Self, Error> {
+        if rows == 0 {
+            return Err(Error::BandHeight);
+        }
+        // Checks the length and the sides.
+        Framebuffer::<C, S>::new(pixels, width, rows)?;
+        Ok(Self {
+            pixels,
+            depths: None,
+            width,
+            rows,
+            far: u16::MAX,
+            color: core::marker::PhantomData,
+        })
+    }
+
+    /// The same bands with a depth band over `depths` (as many entries as pixels), cleared to
+    /// `u16::MAX` (farthest) before each band.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BufferLength`] unless `depths` has one entry per band pixel.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use trirast::{band::Bands, Error};
+    ///
+    /// let (mut band, mut depths) = ([Rgb565::default(); 64 * 4], [0u16; 64 * 3]);
+    /// let bands = Bands::new(&mut band, 64, 4)?;
+    /// assert!(matches!(bands.with_depth(&mut depths), Err(Error::BufferLength { .. })));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn with_depth(mut self, depths: &'b mut [u16]) -> Result<Self, Error> {
+        let expected = self.pixels.len();
+        if depths.len() != expected {
+            return Err(Error::BufferLength {
+                expected,
+                actual: depths.len(),
+            });
+        }
+        self.depths = Some(depths);
+        Ok(self)
+    }
+
+    /// The same bands with depth bands cleared to `far` instead of `u16::MAX` (for
+    /// [`DepthTest::Greater`], clear to 0).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Rgb565;
+    /// use trirast::band::Bands;
+    ///
+    /// let mut band = [Rgb565::default(); 8];
+    /// let _bands = Bands::new(&mut band, 8, 1)?.with_far_depth(0);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_far_depth(mut self, far: u16) -> Self {
+        self.far = far;
+        self
+    }
+
+    /// Renders `scene` band by band from the top: each band is cleared to `background` (and
+    /// the depth band to the far depth), gets the triangles whose rows it touches, in scene
+    /// order, and goes to `target` as one `fill_contiguous` call.
+    ///
+    /// # Errors
+    ///
+    /// [`BandError::Setup`] with [`Error::BandWidth`] unless the bands are as wide as the
+    /// scene's screen, or [`Error::BandDepth`] if the scene has depth-tested triangles and the
+    /// bands no depth band; [`BandError::Target`] with the target's first error.
+    ///
+    /// # Examples
+    ///
+    /// See the [module documentation](self).
+    pub fn render<D, const N: usize, T>(
+        &mut self,
+        scene: &Scene<'_, C, N, T>,
+        background: C,
+        target: &mut D,
+    ) -> Result<(), BandError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+        T: TexelSource<Color = C> + Copy,
+        C: ChannelColor,
+        TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
+        GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
+    {
+        let screen = scene.screen;
+        if screen.size.width != self.width {
+            return Err(BandError::Setup(Error::BandWidth {
+                band: self.width,
+                screen: screen.size.width,
+            }));
+        }
+        if self.depths.is_none() && scene.triangles.iter().any(|t| t.depths.is_some()) {
+            return Err(BandError::Setup(Error::BandDepth));
+        }
+        let bottom = i64::from(screen.top_left.y) + i64::from(screen.size.height);
+        let mut top = i64::from(screen.top_left.y);
+        while top < bottom {
+            // Rows of this band: at most `rows`, fewer for the last one.
+            let rows = (bottom - top).min(i64::from(self.rows)) as u32;
+            let len = (self.width * rows) as usize;
+            let band_top = top as i32;
+            let area = Rectangle::new(
+                Point::new(screen.top_left.x, band_top),
+                Size::new(self.width, rows),
+            );
+            self.render_band(scene, background, &area, len);
+            let pixels = &self.pixels[..len];
+            target
+                .fill_contiguous(&area, pixels.iter().map(|&p| p.load()))
+                .map_err(BandError::Target)?;
+            top += i64::from(rows);
+        }
+        Ok(())
+    }
+
+    /// Draws the triangles touching `area` (one band) into the band buffers.
+    fn render_band<const N: usize, T>(
+        &mut self,
+        scene: &Scene<'_, C, N, T>,
+        background: C,
+        area: &Rectangle,
+        len: usize,
+    ) where
+        T: TexelSource<Color = C> + Copy,
+        C: ChannelColor,
+        TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
+        GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
+    {
+        let rows = area.size.height;
+        let mut band = Framebuffer::<C, S>::new(&mut self.pixels[..len], self.width, rows)
+            .unwrap_or_else(|_| unreachable!("band sized in Bands::new"));
+        // Never fails: the framebuffer's error is Infallible.
+        let _ = band.clear(background);
+        // The band framebuffer addresses its rows from 0: drawing is translated to screen
+        // coordinates, so the band's box is `area`.
+        let offset = area.top_left;
+        let mut band = band.translated(Point::zero() - offset);
+        let mut depth_band = match self.depths.as_deref_mut() {
+            Some(depths) => {
+                let depths = &mut depths[..len];
+                depths.fill(self.far);
+                Some(
+                    DepthBuffer::new(depths, self.width, rows)
+                        .unwrap_or_else(|_| unreachable!("depth band sized in with_depth")),
+                )
+            }
+            None => None,
+        };
+        let band_rows = area.top_left.y..area.top_left.y + rows as i32;
+        let screen = scene.screen;
+        for item in scene
+            .triangles
+            .iter()
+            .filter(|t| t.rows.start < band_rows.end && band_rows.start < t.rows.end)
+        {
+            let drawn = match (item.depths, depth_band.as_mut()) {
+                (Some(depths), Some(buffer)) => {
+                    let mut layered = DepthTarget::new(&mut band, buffer)
+                        .unwrap_or_else(|_| unreachable!("band and depth band match"))
+                        .with_test(scene.test);
+                    match &item.style {
+                        SceneStyle::Flat(s) => layered.draw_in(&item.triangle, depths, s, &screen),
+                        SceneStyle::Gouraud(s) => {
+                            layered.draw_in(&item.triangle, depths, s, &screen)
+                        }
+                        SceneStyle::Texture(s) => {
+                            layered.draw_in(&item.triangle, depths, s, &screen)
+                        }
+                    }
+                }
+                _ => match &item.style {
+                    SceneStyle::Flat(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
+                    SceneStyle::Gouraud(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
+                    SceneStyle::Texture(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
+                },
+            };
+            // The band framebuffer cannot fail.
+            let Ok(()) = drawn;
+        }
+    }
+}

@@ -1,0 +1,250 @@
+//! Band rendering gives, for any band height, the very image full-frame rendering gives; each
+//! band reaches the display as one `fill_contiguous` call; misuse is reported.
+
+mod common;
+
+use common::{CountingTarget, Offset, Rng};
+use embedded_graphics::{
+    pixelcolor::{BinaryColor, Rgb565},
+    prelude::*,
+    primitives::Rectangle,
+};
+use fixed::types::I16F16;
+use proptest::prelude::*;
+use trirast::{
+    band::{BandError, Bands, Scene, SceneStyle},
+    depth::{DepthBuffer, DepthTarget, DepthTest},
+    texture::{Filter, Texels, Wrap},
+    Error, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
+};
+
+const W: u32 = 48;
+const H: u32 = 37;
+
+fn color(rng: &mut Rng) -> Rgb565 {
+    Rgb565::new(
+        rng.range(0, 31) as u8,
+        rng.range(0, 63) as u8,
+        rng.range(0, 31) as u8,
+    )
+}
+
+/// A random scene of 1 to 40 triangles of every kind, some depth-tested, some reaching far off
+/// screen.
+fn random_scene<'a>(
+    rng: &mut Rng,
+    texture: Texels<'a, Rgb565>,
+    test: DepthTest,
+) -> Scene<'a, Rgb565, 64> {
+    let mut scene =
+        Scene::new(Rectangle::new(Point::zero(), Size::new(W, H))).with_depth_test(test);
+    for _ in 0..rng.range(1, 40) {
+        let reach = [5, 30, 3000][rng.range(0, 2) as usize];
+        let v = [(); 3].map(|()| {
+            Point::new(
+                rng.range(-reach, W as i32 + reach),
+                rng.range(-reach, H as i32 + reach),
+            )
+        });
+        let triangle = Triangle { vertices: v };
+        let style = match rng.range(0, 3) {
+            0 => SceneStyle::Flat(FlatStyle::new(color(rng))),
+            1 => SceneStyle::Gouraud(
+                GouraudStyle::new([color(rng), color(rng), color(rng)])
+                    .with_dither(rng.range(0, 1) == 1),
+            ),
+            2 => {
+                let uv = [(); 3].map(|()| {
+                    [
+                        I16F16::from_bits(rng.range(-900_000, 900_000)),
+                        I16F16::from_bits(rng.range(-900_000, 900_000)),
+                    ]
+                });
+                let filter = if rng.range(0, 1) == 0 {
+                    Filter::Nearest
+                } else {
+                    Filter::Bilinear
+                };
+                let wrap = if rng.range(0, 1) == 0 {
+                    Wrap::Clamp
+                } else {
+                    Wrap::Repeat
+                };
+                SceneStyle::Texture(
+                    TextureStyle::new(texture, uv)
+                        .with_filter(filter)
+                        .with_wrap(wrap),
+                )
+            }
+            _ => {
+                let uv = [(); 3].map(|()| [I16F16::from_bits(rng.range(0, 500_000)); 2]);
+                SceneStyle::Texture(TextureStyle::new(texture, uv).with_modulation([
+                    color(rng),
+                    color(rng),
+                    color(rng),
+                ]))
+            }
+        };
+        if rng.range(0, 2) > 0 {
+            let depths = [(); 3].map(|()| rng.range(0, 65535) as u16);
+            scene.push_with_depth(triangle, depths, style).unwrap();
+        } else {
+            scene.push(triangle, style).unwrap();
+        }
+    }
+    scene
+}
+
+/// The reference: every triangle drawn in order into a full frame and depth buffer.
+fn full_frame(scene: &Scene<'_, Rgb565, 64>, background: Rgb565, far: u16) -> Vec<Rgb565> {
+    let mut pixels = vec![background; (W * H) as usize];
+    let mut depths = vec![far; (W * H) as usize];
+    let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
+    let mut zbuffer = DepthBuffer::new(&mut depths, W, H).unwrap();
+    for item in scene.triangles() {
+        match item.depths {
+            Some(d) => {
+                let mut layered = DepthTarget::new(&mut frame, &mut zbuffer)
+                    .unwrap()
+                    .with_test(scene.depth_test());
+                match &item.style {
+                    SceneStyle::Flat(s) => layered.draw(&item.triangle, d, s),
+                    SceneStyle::Gouraud(s) => layered.draw(&item.triangle, d, s),
+                    SceneStyle::Texture(s) => layered.draw(&item.triangle, d, s),
+                }
+                .unwrap();
+            }
+            None => match &item.style {
+                SceneStyle::Flat(s) => item.triangle.into_styled(*s).draw(&mut frame),
+                SceneStyle::Gouraud(s) => item.triangle.into_styled(*s).draw(&mut frame),
+                SceneStyle::Texture(s) => item.triangle.into_styled(*s).draw(&mut frame),
+            }
+            .unwrap(),
+        }
+    }
+    pixels
+}
+
+fn banded(scene: &Scene<'_, Rgb565, 64>, rows: u32, background: Rgb565, far: u16) -> Vec<Rgb565> {
+    let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
+    let mut depth_band = vec![0u16; (W * rows) as usize];
+    let mut bands = Bands::new(&mut band, W, rows)
+        .unwrap()
+        .with_depth(&mut depth_band)
+        .unwrap()
+        .with_far_depth(far);
+    let mut pixels = vec![Rgb565::new(1, 2, 3); (W * H) as usize];
+    let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
+    bands.render(scene, background, &mut frame).unwrap();
+    pixels
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn bands_give_the_full_frame_image(seed in any::<u64>()) {
+        let mut rng = Rng(seed);
+        let texels: Vec<Rgb565> = (0..6 * 5).map(|_| color(&mut rng)).collect();
+        let texture = Texels::new(&texels, 6, 5).unwrap();
+        let test = [DepthTest::Less, DepthTest::LessOrEqual, DepthTest::Greater][rng.range(0, 2) as usize];
+        let far = if test == DepthTest::Greater { 0 } else { u16::MAX };
+        let scene = random_scene(&mut rng, texture, test);
+        let background = color(&mut rng);
+        let want = full_frame(&scene, background, far);
+        for rows in [1, 7, 16, H, H + 5] {
+            let got = banded(&scene, rows, background, far);
+            prop_assert!(got == want, "band height {} differs", rows);
+        }
+    }
+}
+
+/// Each band is one `fill_contiguous` call covering its rows, top to bottom.
+#[test]
+fn one_call_per_band() {
+    let mut scene: Scene<BinaryColor, 4> =
+        Scene::new(Rectangle::new(Point::new(0, 0), Size::new(20, 30)));
+    scene
+        .push(
+            Triangle::new(Point::new(0, 0), Point::new(19, 3), Point::new(4, 29)),
+            SceneStyle::Flat(FlatStyle::new(BinaryColor::On)),
+        )
+        .unwrap();
+    let mut band = [BinaryColor::Off; 20 * 8];
+    let mut bands = Bands::new(&mut band, 20, 8).unwrap();
+    let mut target = Offset(CountingTarget::new(Rectangle::new(
+        Point::zero(),
+        Size::new(20, 30),
+    )));
+    bands.render(&scene, BinaryColor::Off, &mut target).unwrap();
+    assert_eq!(target.0.fill_contiguous_calls, 4); // 8 + 8 + 8 + 6 rows
+    assert_eq!(
+        target.0.fill_solid_calls.len() + target.0.draw_iter_calls,
+        0
+    );
+    assert!(target.0.hits.iter().all(|&n| n == 1));
+}
+
+#[test]
+fn misuse_is_reported() {
+    let screen = Rectangle::new(Point::zero(), Size::new(W, H));
+    let mut scene: Scene<Rgb565, 2> = Scene::new(screen);
+    let t = Triangle::new(Point::new(1, 1), Point::new(20, 2), Point::new(3, 30));
+    let style = SceneStyle::Flat(FlatStyle::new(Rgb565::RED));
+    scene.push(t, style).unwrap();
+    scene.push_with_depth(t, [1, 2, 3], style).unwrap();
+    assert_eq!(scene.push(t, style), Err(Error::SceneFull { capacity: 2 }));
+    assert_eq!(scene.triangles().len(), 2);
+
+    let mut band = vec![Rgb565::BLACK; (W * 4) as usize];
+    assert_eq!(
+        Bands::<Rgb565>::new(&mut band, W, 0).unwrap_err(),
+        Error::BandHeight
+    );
+    assert!(matches!(
+        Bands::<Rgb565>::new(&mut band, W, 5),
+        Err(Error::BufferLength { .. })
+    ));
+    let mut frame_pixels = vec![Rgb565::BLACK; (W * H) as usize];
+    let mut frame = Framebuffer::new(&mut frame_pixels, W, H).unwrap();
+    // Depth-tested triangles need a depth band.
+    let mut bands = Bands::new(&mut band, W, 4).unwrap();
+    assert_eq!(
+        bands.render(&scene, Rgb565::BLACK, &mut frame),
+        Err(BandError::Setup(Error::BandDepth))
+    );
+    let mut short = vec![0u16; 7];
+    assert!(matches!(
+        Bands::<Rgb565>::new(&mut band, W, 4)
+            .unwrap()
+            .with_depth(&mut short),
+        Err(Error::BufferLength { .. })
+    ));
+    // Bands must be as wide as the screen.
+    let mut narrow = vec![Rgb565::BLACK; 10 * 4];
+    let mut bands = Bands::new(&mut narrow, 10, 4).unwrap();
+    assert_eq!(
+        bands.render(&scene, Rgb565::BLACK, &mut frame),
+        Err(BandError::Setup(Error::BandWidth {
+            band: 10,
+            screen: W
+        }))
+    );
+}
+
+/// Memory a 320 x 240 `Rgb565` set-up pays for, as documented in the `band` module.
+#[test]
+fn scene_sizes() {
+    let triangle =
+        core::mem::size_of::<trirast::band::SceneTriangle<Rgb565, Texels<'static, Rgb565>>>();
+    println!(
+        "SceneTriangle<Rgb565>: {triangle} bytes; 200 triangles: {} bytes",
+        200 * triangle
+    );
+    println!(
+        "16-row Rgb565 band: {} bytes, and as much again for its depth band",
+        320 * 16 * 2
+    );
+    // 104 bytes on 64-bit hosts (the texture's slice reference is 16 of them).
+    assert!(triangle <= 104, "{triangle} bytes per scene triangle");
+}
