@@ -1,90 +1,79 @@
 //! Firmware for emulated Cortex-M (QEMU's MPS2 boards): renders the benchmark scenes into a RAM
-//! framebuffer with each drawing mode, prints a checksum of each frame and the instructions per
-//! drawn pixel, and exits.
+//! framebuffer with every drawing mode (flat, Gouraud, Gouraud with depth, nearest and
+//! bilinear textures, 16-row bands with a depth band), checks each frame's checksum against
+//! the host's (`examples/common/modes.rs`, checked on x86-64 by `tests/firmware_frames.rs`),
+//! prints the instructions per drawn pixel and per triangle, and exits with success only if
+//! every frame matches.
 //!
 //! ```text
+//! cargo run --release --target thumbv6m-none-eabi --example firmware --features firmware
 //! ../shared/embedded/xcargo thumbv6m-none-eabi run --release --example firmware --features firmware
 //! ```
 //!
 //! Instruction counts come from SysTick under `qemu -icount shift=3`, where one tick is five
 //! instructions: exact to five instructions per measured frame, and the same on every run.
+//! Only drawing is counted: the scene's triangles are generated before.
 #![no_std]
 #![no_main]
 
+#[path = "common/modes.rs"]
+mod modes;
 #[path = "common/scenes.rs"]
 mod scenes;
 
+use core::sync::atomic::{AtomicU32, Ordering};
+
 use cortex_m::peripheral::{syst::SystClkSource, SYST};
-use cortex_m_rt::entry;
+use cortex_m_rt::{entry, exception};
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use heapless::Vec;
+use modes::{Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
 use panic_halt as _;
-use scenes::{Scene, HEIGHT, WIDTH};
-use trirast::{coverage::for_each_span, FillRule, FlatStyle, Framebuffer, GouraudStyle, Triangle};
+use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use trirast::{band::Scene as BandScene, texture::Texels, Framebuffer};
 
 /// Instructions per SysTick tick under `-icount shift=3` with a 25 MHz SysTick.
-const INSTRUCTIONS_PER_TICK: u32 = 5;
+const INSTRUCTIONS_PER_TICK: u64 = 5;
 
-#[derive(Copy, Clone)]
-enum Mode {
-    Flat,
-    Gouraud,
+/// SysTick reload: the counter wraps (and the exception counts a wrap) every 2^24 ticks.
+const RELOAD: u32 = 0x00FF_FFFF;
+
+/// SysTick wraps so far (only the exception handler writes it).
+static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+#[exception]
+fn SysTick() {
+    WRAPS.store(WRAPS.load(Ordering::Relaxed) + 1, Ordering::Relaxed);
 }
 
-impl Mode {
-    fn name(self) -> &'static str {
-        match self {
-            Mode::Flat => "flat",
-            Mode::Gouraud => "gouraud",
+/// Ticks since the counter started. The exception runs as soon as the counter wraps, so an
+/// unchanged wrap count around the read means the two agree.
+fn ticks() -> u64 {
+    loop {
+        let wraps = WRAPS.load(Ordering::Relaxed);
+        let current = SYST::get_current();
+        if WRAPS.load(Ordering::Relaxed) == wraps {
+            return u64::from(wraps) * (u64::from(RELOAD) + 1) + u64::from(RELOAD - current);
         }
     }
 }
 
-fn draw(mode: Mode, scene: Scene, fb: &mut Framebuffer<'_, Rgb565>) {
-    scene.for_each(|t| {
-        let [a, b, c] = t.vertices;
-        let triangle = Triangle::new(a, b, c);
-        let _ = match mode {
-            Mode::Flat => triangle.into_styled(FlatStyle::new(t.color)).draw(fb),
-            Mode::Gouraud => triangle
-                .into_styled(GouraudStyle::new(t.vertex_colors))
-                .draw(fb),
-        };
-    });
-}
-
-/// Pixels a scene covers, from the coverage walk (not timed).
-fn pixels(scene: Scene) -> u32 {
-    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut total = 0;
-    scene.for_each(|t| {
-        let [a, b, c] = t.vertices;
-        let _ = for_each_span(&Triangle::new(a, b, c), FillRule::TopLeft, &screen, |s| {
-            total += s.len;
-            Ok::<(), ()>(())
-        });
-    });
-    total
-}
-
-/// FNV-1a over the frame's raw little-endian bytes.
-fn fnv1a(pixels: &[Rgb565]) -> u32 {
-    let mut h: u32 = 0x811C_9DC5;
-    for p in pixels {
-        for b in p.into_storage().to_le_bytes() {
-            h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
-        }
-    }
-    h
-}
-
-/// Instructions spent in `f`, counted by SysTick (24 bits: up to 83 million instructions).
-fn count(syst: &mut SYST, f: impl FnOnce()) -> u32 {
-    syst.clear_current();
-    let start = SYST::get_current();
+/// Instructions spent in `f`.
+fn count(f: impl FnOnce()) -> u64 {
+    let start = ticks();
     f();
-    let end = SYST::get_current();
-    (start.wrapping_sub(end) & 0x00FF_FFFF) * INSTRUCTIONS_PER_TICK
+    (ticks() - start) * INSTRUCTIONS_PER_TICK
+}
+
+/// `value / divisor` with two decimals, for printing without floats.
+struct Ratio(u64, u64);
+
+impl core::fmt::Display for Ratio {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let hundredths = self.0 * 100 / self.1.max(1);
+        write!(f, "{}.{:02}", hundredths / 100, hundredths % 100)
+    }
 }
 
 #[entry]
@@ -92,36 +81,84 @@ fn main() -> ! {
     let mut core = cortex_m::Peripherals::take().unwrap();
     let syst = &mut core.SYST;
     syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(0x00FF_FFFF);
+    syst.set_reload(RELOAD);
+    syst.clear_current();
+    syst.enable_interrupt();
     syst.enable_counter();
 
-    let mut pixels_buf = [Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
+    // All of it on the stack (QEMU's boards have 4 MiB of RAM): the frame and depth buffer
+    // (150 KB each), a 5,000-triangle scene and its display list for the band mode.
+    let mut pixels = [Rgb565::BLACK; FRAME_LEN];
+    let mut depths = [0u16; FRAME_LEN];
+    let mut band = [Rgb565::BLACK; BAND_LEN];
+    let mut depth_band = [0u16; BAND_LEN];
+    let mut texels = [Rgb565::BLACK; (TEXTURE_SIDE * TEXTURE_SIDE) as usize];
+    for (i, t) in texels.iter_mut().enumerate() {
+        *t = modes::texel(i as u32, TEXTURE_SIDE);
+    }
+    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut list: BandScene<'static, Rgb565, MAX_TRIANGLES> = BandScene::new(screen);
+    let mut work = Workspace {
+        texture: Texels::new(&texels, TEXTURE_SIDE, TEXTURE_SIDE).unwrap(),
+        depths: &mut depths,
+        band: &mut band,
+        depth_band: &mut depth_band,
+        list: &mut list,
+    };
+    let mut triangles: Vec<SceneTriangle, MAX_TRIANGLES> = Vec::new();
+
     // `FW_ONLY=mode:scene` at build time renders one combination, for profiling under QEMU.
     let only = option_env!("FW_ONLY");
-    for mode in [Mode::Flat, Mode::Gouraud] {
+    let mut failures = 0;
+    hprintln!(
+        "trirast firmware: {}x{} Rgb565, instructions counted by SysTick",
+        WIDTH,
+        HEIGHT
+    );
+    for mode in Mode::ALL {
         for scene in Scene::ALL {
             if let Some(only) = only {
                 if only.split_once(':') != Some((mode.name(), scene.name())) {
                     continue;
                 }
             }
-            let mut fb = Framebuffer::new(&mut pixels_buf, WIDTH, HEIGHT).unwrap();
-            let _ = fb.clear(Rgb565::BLACK);
-            let spent = count(syst, || draw(mode, scene, &mut fb));
-            let drawn = pixels(scene);
-            let hundredths = u64::from(spent) * 100 / u64::from(drawn.max(1));
+            triangles.clear();
+            scene.for_each(|t| {
+                let _ = triangles.push(t);
+            });
+            let drawn = modes::covered_pixels(&triangles);
+            pixels.fill(Rgb565::BLACK);
+            let mut frame = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+            let spent = count(|| modes::draw(mode, &triangles, &mut frame, &mut work));
+            let sum = modes::fnv1a(&pixels);
+            let verdict = if sum == modes::expected(mode, scene) {
+                "ok"
+            } else {
+                failures += 1;
+                "MISMATCH"
+            };
             hprintln!(
-                "{:8} {:6} checksum={:08x} instructions={} pixels={} per_pixel={}.{:02}",
+                "{:<12} {:<8} checksum={:08x} {} instructions={} pixels={} triangles={} per_pixel={} per_triangle={}",
                 mode.name(),
                 scene.name(),
-                fnv1a(fb.pixels()),
+                sum,
+                verdict,
                 spent,
                 drawn,
-                hundredths / 100,
-                hundredths % 100
+                triangles.len(),
+                Ratio(spent, u64::from(drawn)),
+                Ratio(spent, triangles.len() as u64)
             );
         }
     }
-    debug::exit(debug::EXIT_SUCCESS);
-    loop {}
+    if failures == 0 {
+        hprintln!("all frames match the host");
+        debug::exit(debug::EXIT_SUCCESS);
+    } else {
+        hprintln!("{} frames differ from the host", failures);
+        debug::exit(debug::EXIT_FAILURE);
+    }
+    loop {
+        cortex_m::asm::wfi();
+    }
 }

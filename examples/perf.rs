@@ -24,6 +24,8 @@
 
 #[path = "common/counting.rs"]
 mod counting;
+#[path = "common/modes.rs"]
+mod modes;
 #[path = "common/scenes.rs"]
 mod scenes;
 
@@ -63,21 +65,6 @@ const MODES: &[&str] = &[
     "coverage",
 ];
 
-/// A 64 x 64 texture: a checkerboard of 8 x 8 cells over smooth gradients.
-fn texture_pixels(side: u32) -> Vec<Rgb565> {
-    (0..side * side)
-        .map(|i| {
-            let (x, y) = (i % side, i / side);
-            let cell = ((x / 8 + y / 8) % 2) as u8;
-            Rgb565::new(
-                (x % 32) as u8,
-                (y as u8 % 64) | cell,
-                (cell * 31) ^ ((x + y) % 32) as u8,
-            )
-        })
-        .collect()
-}
-
 /// Texture coordinates for a screen position, tiling the screen: rotated and scaled by 3/4
 /// (magnified).
 fn tiled_coordinates(p: Point) -> [I16F16; 2] {
@@ -85,22 +72,6 @@ fn tiled_coordinates(p: Point) -> [I16F16; 2] {
         I16F16::from_bits((p.x * 3 + p.y) << 14),
         I16F16::from_bits((p.y * 3 - p.x) << 14),
     ]
-}
-
-/// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
-/// bounding box.
-fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
-    let (x0, x1) = (
-        vertices.map(|p| p.x).into_iter().min().unwrap(),
-        vertices.map(|p| p.x).into_iter().max().unwrap(),
-    );
-    let (y0, y1) = (
-        vertices.map(|p| p.y).into_iter().min().unwrap(),
-        vertices.map(|p| p.y).into_iter().max().unwrap(),
-    );
-    let along =
-        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
-    vertices.map(|p| [along(p.x, x0, x1), along(p.y, y0, y1)])
 }
 
 /// The spans of a frame, computed once, for the `fill-baseline` mode: what the flat fill costs
@@ -240,7 +211,7 @@ where
     let mut layered = DepthTarget::new(target, zbuffer).unwrap();
     for (k, t) in scene.iter().enumerate() {
         let [a, b, c] = t.vertices;
-        let depths = layered_depths(k, scene.len());
+        let depths = modes::layered_depths(k, scene.len());
         let triangle = Triangle::new(a, b, c);
         if gouraud {
             layered
@@ -271,19 +242,6 @@ thread_local! {
     static BAND_MEMORY: std::cell::RefCell<Option<BandMemory>> = const { std::cell::RefCell::new(None) };
 }
 
-/// Depth of triangle `k` of `count` in the depth modes: each triangle nearer than those before,
-/// depths falling by `gap` from one triangle to the next and by less than that across each.
-fn layered_depths(k: usize, count: usize) -> [u16; 3] {
-    let gap = (60_000 / count.max(1)).max(1) as u32;
-    let near = 60_000u32.saturating_sub(k as u32 * gap);
-    [
-        near,
-        near.saturating_sub(gap / 3),
-        near.saturating_sub(gap * 2 / 3),
-    ]
-    .map(|d| d as u16)
-}
-
 /// The `gouraud-z` frame, band-rendered: the scene is built and rendered every frame.
 #[inline(never)]
 fn band_frame<D>(
@@ -301,7 +259,7 @@ fn band_frame<D>(
         let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
         list.push_with_depth(
             Triangle::new(a, b, c),
-            layered_depths(k, scene.len()),
+            modes::layered_depths(k, scene.len()),
             style,
         )
         .unwrap();
@@ -342,7 +300,7 @@ fn texture_frame<D>(
         let uv = if tiled {
             t.vertices.map(tiled_coordinates)
         } else {
-            stretched_coordinates(t.vertices)
+            modes::stretched_coordinates(t.vertices)
         };
         let mut style = TextureStyle::new(texture, uv)
             .with_filter(filter)
@@ -377,7 +335,7 @@ fn main() -> ExitCode {
     }
     let mut scene = Vec::new();
     scene_kind.for_each(|t| scene.push(t));
-    let texels = texture_pixels(64);
+    let texels: Vec<Rgb565> = (0..64 * 64).map(|i| modes::texel(i, 64)).collect();
     let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
     let mut fb = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).expect("buffer sized for the screen");
 

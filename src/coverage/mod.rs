@@ -205,6 +205,20 @@ pub fn walk<K: SpanSink + ?Sized>(
     // the window needs no clipping at all, and its edges all start at their upper vertex.
     // Inside a window within the fast range, it is within the fast range too.
     let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
+    if cfg!(feature = "small-code") {
+        // One clipped variant of the row loop instead of three.
+        return if fits_fast_path(&sorted) {
+            walk_lane::<i32, K, true, true>(sorted, rule, clip, sink)
+        } else {
+            let (tl, size) = (clip.top_left, clip.size);
+            walk_wide(
+                [a.x, a.y, b.x, b.y, c.x, c.y],
+                rule,
+                [tl.x, tl.y, size.width as i32, size.height as i32],
+                &mut |span| sink.span(span),
+            )
+        };
+    }
     if inside_x && window.holds_y(a.y) && window.holds_y(c.y) && window.in_fast_range() {
         walk_lane::<i32, K, false, false>(sorted, rule, clip, sink)
     } else if fits_fast_path(&sorted) {
@@ -221,7 +235,7 @@ pub fn walk<K: SpanSink + ?Sized>(
             [a.x, a.y, b.x, b.y, c.x, c.y],
             rule,
             [tl.x, tl.y, size.width as i32, size.height as i32],
-            sink,
+            &mut |span| sink.span(span),
         )
     }
 }
@@ -271,14 +285,16 @@ impl Window {
 }
 
 /// The wide path, kept out of line: rare, and it should not bloat the fast path's caller.
+/// The sink is type-erased (a call per span is nothing next to 64-bit edge stepping), so the
+/// wide walk exists once per error type rather than once per style and target.
 #[inline(never)]
 #[cold]
-fn walk_wide<K: SpanSink + ?Sized>(
+fn walk_wide<E>(
     v: [i32; 6],
     rule: FillRule,
     clip: [i32; 4],
-    sink: &mut K,
-) -> Result<(), K::Error> {
+    mut sink: &mut dyn FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
     let sorted = [
         Point::new(v[0], v[1]),
         Point::new(v[2], v[3]),
@@ -288,7 +304,7 @@ fn walk_wide<K: SpanSink + ?Sized>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    walk_lane::<i64, K, true, true>(sorted, rule, &clip, sink)
+    walk_lane::<i64, _, true, true>(sorted, rule, &clip, &mut sink)
 }
 
 /// Walks a triangle whose vertices are sorted top to bottom. `CLIP` is false only for

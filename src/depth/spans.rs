@@ -73,7 +73,10 @@ where
 {
     type Error = D::Error;
 
-    #[inline(always)]
+    // Painting is most of the code: kept out of the walk's row loops (of which there are
+    // several variants) when code size matters.
+    #[cfg_attr(feature = "small-code", inline(never))]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
         // Spans lie in the window, which the buffer covers: the offsets are in range.
         let x = span.x.wrapping_sub(self.origin.0) as u32;

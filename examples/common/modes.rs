@@ -1,0 +1,260 @@
+//! Drawing modes shared by the benchmarks, the firmware example and its host twin
+//! (`tests/firmware_frames.rs`): the same code renders the same frames on x86-64 and Cortex-M,
+//! without allocation.
+#![allow(dead_code)]
+
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use fixed::types::I16F16;
+use trirast::{
+    band::{Bands, Scene as BandScene, SceneStyle},
+    depth::{DepthBuffer, DepthTarget},
+    texture::{Filter, Texels},
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
+};
+
+use crate::scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+
+/// Side of the benchmark texture.
+pub const TEXTURE_SIDE: u32 = 64;
+
+/// Rows per band in the band mode.
+pub const BAND_ROWS: u32 = 16;
+
+/// Band memory: one band of pixels or depths.
+pub const BAND_LEN: usize = (WIDTH * BAND_ROWS) as usize;
+
+/// Pixels in a frame.
+pub const FRAME_LEN: usize = (WIDTH * HEIGHT) as usize;
+
+/// Triangles in the largest scene (`small`).
+pub const MAX_TRIANGLES: usize = 5000;
+
+/// The modes the firmware runs, in order.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// One colour per triangle.
+    Flat,
+    /// Gouraud-shaded `Rgb565`.
+    Gouraud,
+    /// Gouraud through a 16-bit depth buffer, cleared first; every pixel passes.
+    GouraudZ,
+    /// The texture stretched over each triangle's bounding box, nearest texel.
+    TexNearest,
+    /// The same, bilinear.
+    TexBilinear,
+    /// The `GouraudZ` frame as a scene rendered in 16-row bands with a depth band.
+    Band,
+}
+
+impl Mode {
+    /// Every mode.
+    pub const ALL: [Mode; 6] = [
+        Mode::Flat,
+        Mode::Gouraud,
+        Mode::GouraudZ,
+        Mode::TexNearest,
+        Mode::TexBilinear,
+        Mode::Band,
+    ];
+
+    /// The name `examples/perf.rs` uses for the mode.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Flat => "flat",
+            Mode::Gouraud => "gouraud",
+            Mode::GouraudZ => "gouraud-z",
+            Mode::TexNearest => "tex-nearest",
+            Mode::TexBilinear => "tex-bilinear",
+            Mode::Band => "band",
+        }
+    }
+}
+
+/// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
+/// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
+/// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
+pub const EXPECTED: [(Mode, Scene, u32); 24] = [
+    (Mode::Flat, Scene::Big, 0x43168cbe),
+    (Mode::Flat, Scene::Small, 0xbc014761),
+    (Mode::Flat, Scene::Mesh, 0xf6e627c5),
+    (Mode::Flat, Scene::Scene200, 0x2b441a14),
+    (Mode::Gouraud, Scene::Big, 0x96ee23cc),
+    (Mode::Gouraud, Scene::Small, 0x0e6cf47b),
+    (Mode::Gouraud, Scene::Mesh, 0x0383d772),
+    (Mode::Gouraud, Scene::Scene200, 0x2c459411),
+    (Mode::GouraudZ, Scene::Big, 0x96ee23cc),
+    (Mode::GouraudZ, Scene::Small, 0x0e6cf47b),
+    (Mode::GouraudZ, Scene::Mesh, 0x0383d772),
+    (Mode::GouraudZ, Scene::Scene200, 0x2c459411),
+    (Mode::TexNearest, Scene::Big, 0xc4b1d607),
+    (Mode::TexNearest, Scene::Small, 0xb81f01e8),
+    (Mode::TexNearest, Scene::Mesh, 0x4c5c849c),
+    (Mode::TexNearest, Scene::Scene200, 0xd570a37c),
+    (Mode::TexBilinear, Scene::Big, 0xc9a3f17f),
+    (Mode::TexBilinear, Scene::Small, 0x8badc068),
+    (Mode::TexBilinear, Scene::Mesh, 0xc46c39de),
+    (Mode::TexBilinear, Scene::Scene200, 0xbf16723b),
+    (Mode::Band, Scene::Big, 0x96ee23cc),
+    (Mode::Band, Scene::Small, 0x0e6cf47b),
+    (Mode::Band, Scene::Mesh, 0x0383d772),
+    (Mode::Band, Scene::Scene200, 0x2c459411),
+];
+
+/// The expected checksum of `mode` on `scene`.
+pub fn expected(mode: Mode, scene: Scene) -> u32 {
+    EXPECTED
+        .iter()
+        .find(|&&(m, s, _)| m == mode && s == scene)
+        .map_or(0, |&(_, _, sum)| sum)
+}
+
+/// Texel `i` (row-major) of the `side` x `side` benchmark texture: a checkerboard of 8 x 8
+/// cells over smooth gradients.
+pub fn texel(i: u32, side: u32) -> Rgb565 {
+    let (x, y) = (i % side, i / side);
+    let cell = ((x / 8 + y / 8) % 2) as u8;
+    Rgb565::new(
+        (x % 32) as u8,
+        (y as u8 % 64) | cell,
+        (cell * 31) ^ ((x + y) % 32) as u8,
+    )
+}
+
+/// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
+/// bounding box.
+pub fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
+    let xs = vertices.map(|p| p.x);
+    let ys = vertices.map(|p| p.y);
+    let (x0, x1) = (xs.iter().min().unwrap(), xs.iter().max().unwrap());
+    let (y0, y1) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
+    let along =
+        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
+    vertices.map(|p| [along(p.x, *x0, *x1), along(p.y, *y0, *y1)])
+}
+
+/// Depths of triangle `k` of `count` in the depth modes: each triangle nearer than those
+/// before, depths falling by `gap` from one triangle to the next and by less across each.
+pub fn layered_depths(k: usize, count: usize) -> [u16; 3] {
+    let gap = (60_000 / count.max(1)).max(1) as u32;
+    let near = 60_000u32.saturating_sub(k as u32 * gap);
+    [
+        near,
+        near.saturating_sub(gap / 3),
+        near.saturating_sub(gap * 2 / 3),
+    ]
+    .map(|d| d as u16)
+}
+
+/// Everything a frame draws with besides the frame itself.
+pub struct Workspace<'a, const N: usize> {
+    /// The benchmark texture.
+    pub texture: Texels<'a, Rgb565>,
+    /// A full-frame depth buffer (for `GouraudZ`).
+    pub depths: &'a mut [u16],
+    /// The band buffer and depth band (for `Band`).
+    pub band: &'a mut [Rgb565],
+    /// The depth band.
+    pub depth_band: &'a mut [u16],
+    /// The display list (for `Band`).
+    pub list: &'a mut BandScene<'static, Rgb565, N>,
+}
+
+/// Draws `triangles` in `mode` into `frame` (320 x 240).
+pub fn draw<const N: usize>(
+    mode: Mode,
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    work: &mut Workspace<'_, N>,
+) {
+    let count = triangles.len();
+    match mode {
+        Mode::Flat => {
+            for t in triangles {
+                let [a, b, c] = t.vertices;
+                let _ = Triangle::new(a, b, c)
+                    .into_styled(FlatStyle::new(t.color))
+                    .draw(frame);
+            }
+        }
+        Mode::Gouraud => {
+            for t in triangles {
+                let [a, b, c] = t.vertices;
+                let _ = Triangle::new(a, b, c)
+                    .into_styled(GouraudStyle::new(t.vertex_colors))
+                    .draw(frame);
+            }
+        }
+        Mode::GouraudZ => {
+            work.depths.fill(u16::MAX);
+            let Ok(mut zbuffer) = DepthBuffer::new(work.depths, WIDTH, HEIGHT) else {
+                return;
+            };
+            let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
+                return;
+            };
+            for (k, t) in triangles.iter().enumerate() {
+                let [a, b, c] = t.vertices;
+                let style = GouraudStyle::new(t.vertex_colors);
+                let _ = layered.draw(&Triangle::new(a, b, c), layered_depths(k, count), &style);
+            }
+        }
+        Mode::TexNearest | Mode::TexBilinear => {
+            let filter = if mode == Mode::TexNearest {
+                Filter::Nearest
+            } else {
+                Filter::Bilinear
+            };
+            for t in triangles {
+                let [a, b, c] = t.vertices;
+                let style = TextureStyle::new(work.texture, stretched_coordinates(t.vertices))
+                    .with_filter(filter);
+                let _ = Triangle::new(a, b, c).into_styled(style).draw(frame);
+            }
+        }
+        Mode::Band => {
+            let list = &mut *work.list;
+            list.clear();
+            for (k, t) in triangles.iter().enumerate() {
+                let [a, b, c] = t.vertices;
+                let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
+                let _ =
+                    list.push_with_depth(Triangle::new(a, b, c), layered_depths(k, count), style);
+            }
+            let bands = Bands::new(work.band, WIDTH, BAND_ROWS)
+                .and_then(|bands| bands.with_depth(work.depth_band));
+            if let Ok(mut bands) = bands {
+                let _ = bands.render(list, Rgb565::BLACK, frame);
+            }
+        }
+    }
+}
+
+/// Pixels a scene covers (from the coverage walk).
+pub fn covered_pixels(triangles: &[SceneTriangle]) -> u32 {
+    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut total = 0;
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = trirast::coverage::for_each_span(
+            &Triangle::new(a, b, c),
+            trirast::FillRule::TopLeft,
+            &screen,
+            |s| {
+                total += s.len;
+                Ok::<(), ()>(())
+            },
+        );
+    }
+    total
+}
+
+/// FNV-1a over the frame's raw little-endian bytes.
+pub fn fnv1a(pixels: &[Rgb565]) -> u32 {
+    let mut h: u32 = 0x811C_9DC5;
+    for p in pixels {
+        for b in p.into_storage().to_le_bytes() {
+            h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+        }
+    }
+    h
+}
