@@ -210,12 +210,16 @@ pub fn walk<K: SpanSink + ?Sized>(
         return if fits_fast_path(&sorted) {
             walk_lane::<i32, K, true, true>(sorted, rule, clip, sink)
         } else {
+            // Type-erased: one wide walk per error type rather than one per style and target
+            // (a call per span is nothing next to 64-bit edge stepping).
             let (tl, size) = (clip.top_left, clip.size);
+            let mut erased: &mut dyn FnMut(Span) -> Result<(), K::Error> =
+                &mut move |span| sink.span(span);
             walk_wide(
                 [a.x, a.y, b.x, b.y, c.x, c.y],
                 rule,
                 [tl.x, tl.y, size.width as i32, size.height as i32],
-                &mut |span| sink.span(span),
+                &mut erased,
             )
         };
     }
@@ -235,7 +239,7 @@ pub fn walk<K: SpanSink + ?Sized>(
             [a.x, a.y, b.x, b.y, c.x, c.y],
             rule,
             [tl.x, tl.y, size.width as i32, size.height as i32],
-            &mut |span| sink.span(span),
+            sink,
         )
     }
 }
@@ -285,16 +289,14 @@ impl Window {
 }
 
 /// The wide path, kept out of line: rare, and it should not bloat the fast path's caller.
-/// The sink is type-erased (a call per span is nothing next to 64-bit edge stepping), so the
-/// wide walk exists once per error type rather than once per style and target.
 #[inline(never)]
 #[cold]
-fn walk_wide<E>(
+fn walk_wide<K: SpanSink + ?Sized>(
     v: [i32; 6],
     rule: FillRule,
     clip: [i32; 4],
-    mut sink: &mut dyn FnMut(Span) -> Result<(), E>,
-) -> Result<(), E> {
+    sink: &mut K,
+) -> Result<(), K::Error> {
     let sorted = [
         Point::new(v[0], v[1]),
         Point::new(v[2], v[3]),
@@ -304,7 +306,7 @@ fn walk_wide<E>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    walk_lane::<i64, _, true, true>(sorted, rule, &clip, &mut sink)
+    walk_lane::<i64, K, true, true>(sorted, rule, &clip, sink)
 }
 
 /// Walks a triangle whose vertices are sorted top to bottom. `CLIP` is false only for
