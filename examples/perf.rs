@@ -377,20 +377,9 @@ fn main() -> ExitCode {
         "mode={mode} scene={} frames={frames} time={:.3}ms mpixels_per_s={rate:.1} checksum={:08x}",
         scene_kind.name(),
         secs * 1e3,
-        fnv1a(fb.pixels())
+        modes::fnv1a(fb.pixels())
     );
     println!("per_frame: pixels={per_frame} overdraw={overdraw} gaps={gaps}");
     println!("pixels={total} triangles={}", scene.len() as u64 * frames);
     ExitCode::SUCCESS
-}
-
-/// FNV-1a over the frame's raw little-endian bytes.
-fn fnv1a(pixels: &[Rgb565]) -> u32 {
-    let mut h: u32 = 0x811C_9DC5;
-    for p in pixels {
-        for b in p.into_storage().to_le_bytes() {
-            h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
-        }
-    }
-    h
 }
