@@ -5,6 +5,8 @@
 //! cargo run --release --example showcase -- DIR     # writes DIR/*.png
 //! ```
 
+#[path = "common/breakout.rs"]
+mod breakout;
 #[path = "common/cube.rs"]
 mod cube;
 #[path = "common/scenes.rs"]
@@ -25,7 +27,6 @@ use tinybmp::Bmp;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
-    mesh::{Cull, Mesh},
     shading::Fragment,
     texture::{Filter, ImageTexels, Texels},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
@@ -96,6 +97,11 @@ const SCENES: &[Scene] = &[
         name: "overdraw",
         about: "times each pixel of a mesh is written: trirast (left) vs embedded-graphics (right)",
         render: overdraw,
+    },
+    Scene {
+        name: "breakout",
+        about: "Breakout (examples/breakout.rs) after 3,000 frames of the autopilot",
+        render: breakout_frame,
     },
 ];
 
@@ -456,16 +462,8 @@ fn depth_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let mut fb = Framebuffer::new(&mut pixels, w, h).unwrap();
     let mut zbuffer = DepthBuffer::new(&mut depths, w, h).unwrap();
     let area = Rectangle::new(Point::zero(), Size::new(w, h));
-    let vertices = cube::vertices(5, 24, area);
-    let mesh = Mesh::new(&vertices, &cube::TRIANGLES).unwrap();
     let mut scene = DepthTarget::new(&mut fb, &mut zbuffer).unwrap();
-    mesh.draw_with_depth(&mut scene, Cull::Clockwise, |_, corners| {
-        let gray = |l: u8| Rgb565::new(l >> 3, l >> 2, l >> 3);
-        TextureStyle::new(texture, corners.map(|v| v.uv))
-            .with_filter(Filter::Bilinear)
-            .with_modulation(corners.map(|v| gray(v.light)))
-    })
-    .unwrap();
+    cube::draw(&mut scene, area, texture, (5, 24)).unwrap();
     let mut display = SimulatorDisplay::new(Size::new(2 * w + 8, h));
     blit_565(&pixels, w, &mut display);
     // Depths as gray: near is bright; the cleared background stays black.
@@ -673,4 +671,19 @@ impl DrawTarget for Counter {
         }
         Ok(())
     }
+}
+
+/// A frame of the Breakout example, mid-game: every rectangle is two Gouraud triangles.
+fn breakout_frame() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (breakout::WIDTH as u32, breakout::HEIGHT as u32);
+    let mut game = breakout::Game::new();
+    for _ in 0..3_000 {
+        game.play(breakout::Command::Auto);
+    }
+    let mut pixels = vec![Rgb565::BLACK; (w * h) as usize];
+    let mut fb = Framebuffer::new(&mut pixels, w, h).unwrap();
+    game.draw(&mut fb).unwrap();
+    let mut display = SimulatorDisplay::new(Size::new(w, h));
+    blit_565(&pixels, w, &mut display);
+    (display, OutputSettingsBuilder::new().scale(2).build())
 }

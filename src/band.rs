@@ -179,7 +179,13 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     ///
     /// # Examples
     ///
-    /// See [`Scene::with_depth_test`].
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::Scene, depth::DepthTest};
+    ///
+    /// let scene: Scene<Rgb565, 4> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// assert_eq!(scene.depth_test(), DepthTest::Less);
+    /// ```
     #[must_use]
     pub fn depth_test(&self) -> DepthTest {
         self.test
@@ -209,7 +215,17 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     ///
     /// # Examples
     ///
-    /// See [`Scene`].
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Scene, SceneStyle}, Error, FlatStyle, Triangle};
+    ///
+    /// let mut scene: Scene<Gray8, 1> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(7, 0), Point::new(0, 7));
+    /// let style = SceneStyle::Flat(FlatStyle::new(Gray8::WHITE));
+    /// scene.push(t, style)?;
+    /// assert_eq!(scene.push(t, style), Err(Error::SceneFull { capacity: 1 }));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     pub fn push(&mut self, triangle: Triangle, style: SceneStyle<C, T>) -> Result<(), Error> {
         self.push_item(triangle, None, style)
     }
@@ -222,7 +238,16 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     ///
     /// # Examples
     ///
-    /// See the [module documentation](self).
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let mut scene: Scene<Gray8, 4> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(7, 0), Point::new(0, 7));
+    /// scene.push_with_depth(t, [10, 20, 30], SceneStyle::Flat(FlatStyle::new(Gray8::WHITE)))?;
+    /// assert_eq!(scene.triangles()[0].depths, Some([10, 20, 30]));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     pub fn push_with_depth(
         &mut self,
         triangle: Triangle,
@@ -271,7 +296,17 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     ///
     /// # Examples
     ///
-    /// See [`SceneTriangle`].
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let mut scene: Scene<Gray8, 4> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// let t = Triangle::new(Point::new(0, 2), Point::new(7, 2), Point::new(0, 5));
+    /// scene.push(t, SceneStyle::Flat(FlatStyle::new(Gray8::WHITE)))?;
+    /// assert_eq!(scene.triangles().len(), 1);
+    /// assert_eq!(scene.triangles()[0].rows, 2..6);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     #[must_use]
     pub fn triangles(&self) -> &[SceneTriangle<C, T>] {
         &self.triangles
@@ -340,7 +375,19 @@ pub enum BandError<E> {
 ///
 /// # Examples
 ///
-/// See the [module documentation](self).
+/// ```
+/// use embedded_graphics::pixelcolor::Rgb565;
+/// use trirast::{band::Bands, Error};
+///
+/// // 16 rows of a 320-pixel-wide screen, with a depth band: 20 KB in all.
+/// let mut band = [Rgb565::default(); 320 * 16];
+/// let mut depth_band = [0u16; 320 * 16];
+/// let _bands = Bands::new(&mut band, 320, 16)?.with_depth(&mut depth_band)?;
+/// // A buffer that does not hold the rows is an error, not a panic later.
+/// assert_eq!(Bands::new(&mut [Rgb565::default(); 10], 320, 16).unwrap_err(),
+///            Error::BufferLength { expected: 320 * 16, actual: 10 });
+/// # Ok::<(), trirast::Error>(())
+/// ```
 #[derive(Debug)]
 pub struct Bands<'b, C, S = C> {
     pixels: &'b mut [S],
@@ -450,7 +497,21 @@ where
     ///
     /// # Examples
     ///
-    /// See the [module documentation](self).
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Bands, Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let screen = Rectangle::new(Point::zero(), Size::new(4, 4));
+    /// let mut scene: Scene<BinaryColor, 2> = Scene::new(screen);
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(4, 0), Point::new(0, 4));
+    /// scene.push(t, SceneStyle::Flat(FlatStyle::new(BinaryColor::On)))?;
+    /// // One row at a time: four bands, each one `fill_contiguous` call.
+    /// let mut band = [BinaryColor::Off; 4];
+    /// let mut display = MockDisplay::new();
+    /// Bands::new(&mut band, 4, 1)?.render(&scene, BinaryColor::Off, &mut display).unwrap();
+    /// display.assert_pattern(&["####", "###.", "##..", "#..."]);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     pub fn render<D, const N: usize, T>(
         &mut self,
         scene: &Scene<'_, C, N, T>,

@@ -238,7 +238,20 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
     ///
     /// # Examples
     ///
-    /// See [`Mesh`].
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{mesh::{Cull, Mesh}, FlatStyle, Framebuffer};
+    ///
+    /// // A square as two triangles sharing a diagonal, both counter-clockwise on screen.
+    /// let v = [Point::new(0, 0), Point::new(0, 4), Point::new(4, 4), Point::new(4, 0)];
+    /// let mesh = Mesh::new(&v, &[[0, 1, 2], [0, 2, 3]])?;
+    /// let mut pixels = [Gray8::BLACK; 16];
+    /// let mut display = Framebuffer::new(&mut pixels, 4, 4)?;
+    /// let shades = [Gray8::new(100), Gray8::new(200)];
+    /// mesh.draw(&mut display, Cull::None, |i, _| FlatStyle::new(shades[i])).unwrap();
+    /// assert!(pixels.iter().all(|&p| p != Gray8::BLACK)); // no gap on the diagonal
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     pub fn draw<D, S, F>(&self, target: &mut D, cull: Cull, mut style_of: F) -> Result<(), D::Error>
     where
         D: DrawTarget,

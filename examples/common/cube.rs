@@ -5,9 +5,38 @@
 //! over at normalised device coordinates, through `Viewport`.
 #![allow(dead_code)]
 
-use embedded_graphics::{geometry::Point, primitives::Rectangle};
+use embedded_graphics::{
+    draw_target::DrawTarget, geometry::Point, pixelcolor::Rgb565, primitives::Rectangle,
+};
 use fixed::types::I16F16;
-use trirast::geometry::Viewport;
+use trirast::{
+    depth::DepthTarget,
+    geometry::Viewport,
+    mesh::{Cull, Mesh},
+    texture::{Filter, Texels},
+    TextureStyle,
+};
+
+/// Draws frame `frame` of `frames` into `area` of `scene` (a target with its depth buffer):
+/// back faces culled, each face `texture`d, filtered bilinearly and lit per vertex.
+pub fn draw<D>(
+    scene: &mut DepthTarget<'_, '_, D>,
+    area: Rectangle,
+    texture: Texels<'_, Rgb565>,
+    (frame, frames): (u32, u32),
+) -> Result<(), D::Error>
+where
+    D: DrawTarget<Color = Rgb565>,
+{
+    let vertices = vertices(frame, frames, area);
+    let mesh = Mesh::new(&vertices, &TRIANGLES).expect("the cube's indices are in range");
+    mesh.draw_with_depth(scene, Cull::Clockwise, |_, corners| {
+        let gray = |l: u8| Rgb565::new(l >> 3, l >> 2, l >> 3);
+        TextureStyle::new(texture, corners.map(|v| v.uv))
+            .with_filter(Filter::Bilinear)
+            .with_modulation(corners.map(|v| gray(v.light)))
+    })
+}
 
 /// Fixed point with 16 fraction bits, in `i64` so products need no care.
 const ONE: i64 = 1 << 16;

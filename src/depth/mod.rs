@@ -381,7 +381,23 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
     ///
     /// # Examples
     ///
-    /// See [`DepthTarget`] and the [module documentation](self).
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{depth::{DepthBuffer, DepthTarget}, FlatStyle, Triangle};
+    /// use trirast::Framebuffer;
+    ///
+    /// let (mut pixels, mut depths) = ([Gray8::BLACK; 64], [u16::MAX; 64]);
+    /// let mut display = Framebuffer::new(&mut pixels, 8, 8)?;
+    /// let mut zbuffer = DepthBuffer::new(&mut depths, 8, 8)?;
+    /// let mut scene = DepthTarget::new(&mut display, &mut zbuffer)?;
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+    /// // Near first, then far: the far triangle fails the test everywhere they overlap.
+    /// scene.draw(&t, [100; 3], &FlatStyle::new(Gray8::WHITE)).unwrap();
+    /// scene.draw(&t, [900; 3], &FlatStyle::new(Gray8::new(50))).unwrap();
+    /// assert_eq!(display.pixel(Point::new(1, 1)), Some(Gray8::WHITE));
+    /// assert_eq!(depths[1 * 8 + 1], 100);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
     pub fn draw<S>(
         &mut self,
         triangle: &Triangle,

@@ -12,6 +12,22 @@ use core::ops::{Add, AddAssign, Sub, SubAssign};
 /// The fast path runs for every coordinate in `-2^30..2^30`: edge deltas then stay below
 /// `2^31`, edge positions within `-2^30..=2^30`, stepping error terms within `-2^31..2^31` and
 /// doubled areas within `i64`. Beyond, the same walk runs in 64-bit arithmetic.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use trirast::{FlatStyle, Triangle, FAST_LIMIT};
+///
+/// // Far beyond the fast range, still exact: this one covers the whole 64x64 display.
+/// let (min, max) = (i32::MIN, i32::MAX);
+/// assert!(max > FAST_LIMIT);
+/// let t = Triangle::new(Point::new(min, min), Point::new(max, 0), Point::new(0, max));
+/// let mut display = MockDisplay::new();
+/// t.into_styled(FlatStyle::new(BinaryColor::On)).draw(&mut display).unwrap();
+/// assert_eq!(display.get_pixel(Point::new(0, 0)), Some(BinaryColor::On));
+/// assert_eq!(display.get_pixel(Point::new(63, 63)), Some(BinaryColor::On));
+/// ```
 pub const FAST_LIMIT: i32 = (1 << 30) - 1;
 
 /// The fast range is `-FAST_BIAS..FAST_BIAS`: biased by `FAST_BIAS`, a coordinate in it has
