@@ -16,6 +16,9 @@
 
 #[path = "common/breakout.rs"]
 mod breakout;
+#[cfg(feature = "sdl")]
+#[path = "common/demo_window.rs"]
+mod demo_window;
 
 use std::path::Path;
 
@@ -98,7 +101,7 @@ fn run_headless(script: &str) {
 
 #[cfg(feature = "sdl")]
 mod window {
-    use super::*;
+    use super::{demo_window, *};
     use breakout::Input;
     use embedded_graphics_simulator::{sdl2::Keycode, SimulatorEvent, Window};
 
@@ -117,23 +120,14 @@ mod window {
             render(&game, &mut pixels, &mut display);
             // With EG_SIMULATOR_DUMP set this writes the first frame and exits (a smoke test).
             window.update(&display);
-            let mut input = Input {
-                left,
-                right,
-                paddle_centre: mouse,
-                ..Input::default()
-            };
+            let mut launch = false;
             for event in window.events() {
                 match event {
-                    SimulatorEvent::Quit
-                    | SimulatorEvent::KeyDown {
-                        keycode: Keycode::Escape,
-                        ..
-                    } => return,
+                    e if demo_window::is_quit(&e) => return,
                     SimulatorEvent::KeyDown { keycode, .. } => match keycode {
                         Keycode::Left => (left, mouse) = (true, None),
                         Keycode::Right => (right, mouse) = (true, None),
-                        Keycode::Space => input.launch = true,
+                        Keycode::Space => launch = true,
                         Keycode::A => autopilot = !autopilot,
                         _ => {}
                     },
@@ -143,13 +137,16 @@ mod window {
                         _ => {}
                     },
                     SimulatorEvent::MouseMove { point } => mouse = Some(point.x),
-                    SimulatorEvent::MouseButtonDown { .. } => input.launch = true,
+                    SimulatorEvent::MouseButtonDown { .. } => launch = true,
                     _ => {}
                 }
             }
-            input.left = left;
-            input.right = right;
-            input.paddle_centre = mouse;
+            let mut input = Input {
+                left,
+                right,
+                launch,
+                paddle_centre: mouse,
+            };
             if autopilot && !matches!(game.state(), State::Won | State::Lost) {
                 input = game.autopilot();
             }

@@ -14,14 +14,16 @@
 
 #[path = "common/cube.rs"]
 mod cube;
+#[cfg(feature = "sdl")]
+#[path = "common/demo_window.rs"]
+mod demo_window;
 
-use std::{path::PathBuf, time::Instant};
-
-use embedded_graphics::{
-    pixelcolor::{Rgb565, Rgb888},
-    prelude::*,
-    primitives::Rectangle,
+use std::{
+    path::PathBuf,
+    time::{Duration, Instant},
 };
+
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use trirast::{
     depth::{DepthBuffer, DepthTarget},
@@ -32,27 +34,43 @@ use trirast::{
 const WIDTH: u32 = 240;
 const HEIGHT: u32 = 180;
 
-/// The cube's texture as `Rgb565` texels.
-fn texels() -> Vec<Rgb565> {
-    (0..cube::TEXTURE * cube::TEXTURE)
-        .map(|i| {
-            let [r, g, b] = cube::texel(i % cube::TEXTURE, i / cube::TEXTURE);
-            Rgb888::new(r, g, b).into()
-        })
-        .collect()
+/// The texture, frame, depth buffer and display a frame is drawn through, allocated once.
+struct Renderer {
+    texels: [Rgb565; (cube::TEXTURE * cube::TEXTURE) as usize],
+    pixels: Vec<Rgb565>,
+    depths: Vec<u16>,
+    display: SimulatorDisplay<Rgb565>,
 }
 
-/// Draws frame `frame` of `frames` (one turn) into `pixels` through `depths`.
-fn render(texels: &[Rgb565], pixels: &mut [Rgb565], depths: &mut [u16], frame: u32, frames: u32) {
-    let side = cube::TEXTURE as u32;
-    let texture = Texels::new(texels, side, side).unwrap();
-    let mut display = Framebuffer::new(pixels, WIDTH, HEIGHT).unwrap();
-    display.clear(Rgb565::new(3, 8, 12)).unwrap();
-    let mut zbuffer = DepthBuffer::new(depths, WIDTH, HEIGHT).unwrap();
-    zbuffer.clear(u16::MAX);
-    let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut scene = DepthTarget::new(&mut display, &mut zbuffer).unwrap();
-    cube::draw(&mut scene, area, texture, (frame, frames)).unwrap();
+impl Renderer {
+    fn new() -> Self {
+        Self {
+            texels: cube::texels(),
+            pixels: vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize],
+            depths: vec![0u16; (WIDTH * HEIGHT) as usize],
+            display: SimulatorDisplay::new(Size::new(WIDTH, HEIGHT)),
+        }
+    }
+
+    /// Draws frame `frame` of `frames` (one turn) and copies it to the simulator display;
+    /// returns the display and the time spent drawing (the copy not included).
+    fn render(&mut self, frame: u32, frames: u32) -> (&SimulatorDisplay<Rgb565>, Duration) {
+        let start = Instant::now();
+        let side = cube::TEXTURE as u32;
+        let texture = Texels::new(&self.texels, side, side).unwrap();
+        let mut framebuffer = Framebuffer::new(&mut self.pixels, WIDTH, HEIGHT).unwrap();
+        framebuffer.clear(Rgb565::new(3, 8, 12)).unwrap();
+        let mut zbuffer = DepthBuffer::new(&mut self.depths, WIDTH, HEIGHT).unwrap();
+        zbuffer.clear(u16::MAX);
+        let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+        let mut scene = DepthTarget::new(&mut framebuffer, &mut zbuffer).unwrap();
+        cube::draw(&mut scene, area, texture, (frame, frames)).unwrap();
+        let drawn = start.elapsed();
+        self.display
+            .fill_contiguous(&area, self.pixels.iter().copied())
+            .unwrap();
+        (&self.display, drawn)
+    }
 }
 
 fn main() {
@@ -67,20 +85,13 @@ fn main() {
     let frames: u32 = args.get(1).and_then(|n| n.parse().ok()).unwrap_or(24);
     std::fs::create_dir_all(&dir).expect("cannot create the output folder");
 
-    let texels = texels();
-    let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
-    let mut depths = vec![0u16; (WIDTH * HEIGHT) as usize];
-    let mut out = SimulatorDisplay::<Rgb565>::new(Size::new(WIDTH, HEIGHT));
-    let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-
+    let mut renderer = Renderer::new();
     println!("writing {frames} frames to {}", dir.display());
     for frame in 0..frames {
-        let start = Instant::now();
-        render(&texels, &mut pixels, &mut depths, frame, frames);
-        let drawn = start.elapsed();
-        out.fill_contiguous(&area, pixels.iter().copied()).unwrap();
+        let (display, drawn) = renderer.render(frame, frames);
         let path = dir.join(format!("frame_{frame:02}.png"));
-        out.to_rgb_output_image(&OutputSettingsBuilder::new().scale(2).build())
+        display
+            .to_rgb_output_image(&OutputSettingsBuilder::new().scale(2).build())
             .save_png(&path)
             .expect("cannot write the PNG");
         println!("  {} ({:.2} ms)", path.display(), drawn.as_secs_f64() * 1e3);
@@ -90,40 +101,19 @@ fn main() {
 /// The cube spinning in a window, one turn every four seconds; Escape or closing quits.
 #[cfg(feature = "sdl")]
 fn window() {
-    use embedded_graphics_simulator::{sdl2::Keycode, SimulatorEvent, Window};
+    use embedded_graphics_simulator::Window;
     const FRAMES_PER_TURN: u32 = 240;
-    let texels = texels();
-    let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
-    let mut depths = vec![0u16; (WIDTH * HEIGHT) as usize];
-    let mut out = SimulatorDisplay::<Rgb565>::new(Size::new(WIDTH, HEIGHT));
-    let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut renderer = Renderer::new();
     let mut window = Window::new(
         "trirast: textured cube, depth buffer",
         &OutputSettingsBuilder::new().scale(3).build(),
     );
     window.set_max_fps(60);
     for frame in 0.. {
-        render(
-            &texels,
-            &mut pixels,
-            &mut depths,
-            frame % (2 * FRAMES_PER_TURN),
-            FRAMES_PER_TURN,
-        );
-        out.fill_contiguous(&area, pixels.iter().copied()).unwrap();
+        let (display, _) = renderer.render(frame % (2 * FRAMES_PER_TURN), FRAMES_PER_TURN);
         // With EG_SIMULATOR_DUMP set this writes the first frame and exits (a smoke test).
-        window.update(&out);
-        let quit = window.events().any(|e| {
-            matches!(
-                e,
-                SimulatorEvent::Quit
-                    | SimulatorEvent::KeyDown {
-                        keycode: Keycode::Escape,
-                        ..
-                    }
-            )
-        });
-        if quit {
+        window.update(display);
+        if window.events().any(|e| demo_window::is_quit(&e)) {
             return;
         }
     }

@@ -12,6 +12,9 @@
 //! outside), its barycentric weights, the colour interpolated from them and the colour the
 //! rasterizer drew there.
 
+#[path = "common/demo_window.rs"]
+mod demo_window;
+
 use embedded_graphics::{
     mono_font::{ascii::FONT_6X10, MonoTextStyle},
     pixelcolor::{Rgb565, Rgb888},
@@ -55,11 +58,7 @@ fn main() {
         window.update(&display);
         for event in window.events() {
             match event {
-                SimulatorEvent::Quit
-                | SimulatorEvent::KeyDown {
-                    keycode: Keycode::Escape,
-                    ..
-                } => return,
+                e if demo_window::is_quit(&e) => return,
                 SimulatorEvent::KeyDown {
                     keycode: Keycode::F,
                     ..

@@ -449,12 +449,7 @@ fn textured_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
 /// The spinning cube of `examples/cube.rs`, one frame, beside its depth buffer.
 fn depth_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let (w, h) = (200u32, 160u32);
-    let texels: Vec<Rgb565> = (0..cube::TEXTURE * cube::TEXTURE)
-        .map(|i| {
-            let [r, g, b] = cube::texel(i % cube::TEXTURE, i / cube::TEXTURE);
-            Rgb888::new(r, g, b).into()
-        })
-        .collect();
+    let texels = cube::texels();
     let side = cube::TEXTURE as u32;
     let texture = Texels::new(&texels, side, side).unwrap();
     let mut pixels = vec![Rgb565::new(3, 8, 12); (w * h) as usize];

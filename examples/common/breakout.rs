@@ -12,7 +12,7 @@ use embedded_graphics::{
     prelude::*,
     text::{Alignment, Text},
 };
-use trirast::{FlatStyle, GouraudStyle, Triangle};
+use trirast::{GouraudStyle, Triangle};
 
 /// Playfield size in pixels.
 pub const WIDTH: i32 = 320;
@@ -403,15 +403,6 @@ where
 {
     let (a, b) = (top_left, bottom_right);
     let (top_right, bottom_left) = (Point::new(b.x, a.y), Point::new(a.x, b.y));
-    if tl == tr && tl == bl && tl == br {
-        let style = FlatStyle::new(tl);
-        Triangle::new(a, top_right, b)
-            .into_styled(style)
-            .draw(target)?;
-        return Triangle::new(a, b, bottom_left)
-            .into_styled(style)
-            .draw(target);
-    }
     Triangle::new(a, top_right, b)
         .into_styled(GouraudStyle::new([tl, tr, br]))
         .draw(target)?;

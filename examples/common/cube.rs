@@ -6,7 +6,10 @@
 #![allow(dead_code)]
 
 use embedded_graphics::{
-    draw_target::DrawTarget, geometry::Point, pixelcolor::Rgb565, primitives::Rectangle,
+    draw_target::DrawTarget,
+    geometry::Point,
+    pixelcolor::{Rgb565, Rgb888},
+    primitives::Rectangle,
 };
 use fixed::types::I16F16;
 use trirast::{
@@ -160,6 +163,15 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
         }
     }
     out
+}
+
+/// The whole texture in `Rgb565`, row by row (8 KB, no allocation).
+pub fn texels() -> [Rgb565; (TEXTURE * TEXTURE) as usize] {
+    core::array::from_fn(|i| {
+        let i = i as i32;
+        let [r, g, b] = texel(i % TEXTURE, i / TEXTURE);
+        Rgb888::new(r, g, b).into()
+    })
 }
 
 /// A procedural `TEXTURE` x `TEXTURE` texture: framed checker tiles.

@@ -200,11 +200,6 @@ pub fn walk<K: SpanSink + ?Sized>(
 ) -> Result<(), K::Error> {
     let sorted = sort_top_to_bottom(triangle.vertices);
     let [a, b, c] = sorted;
-    let window = Window::new(clip);
-    // Span bounds lie within x_min..=x_max + 1 and rows within a.y..=c.y: a triangle inside
-    // the window needs no clipping at all, and its edges all start at their upper vertex.
-    // Inside a window within the fast range, it is within the fast range too.
-    let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
     if cfg!(feature = "small-code") {
         // One clipped variant of the row loop instead of three.
         return if fits_fast_path(&sorted) {
@@ -223,6 +218,11 @@ pub fn walk<K: SpanSink + ?Sized>(
             )
         };
     }
+    // Span bounds lie within x_min..=x_max + 1 and rows within a.y..=c.y: a triangle inside
+    // the window needs no clipping at all, and its edges all start at their upper vertex.
+    // Inside a window within the fast range, it is within the fast range too.
+    let window = Window::new(clip);
+    let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
     if inside_x && window.holds_y(a.y) && window.holds_y(c.y) && window.in_fast_range() {
         walk_lane::<i32, K, false, false>(sorted, rule, clip, sink)
     } else if fits_fast_path(&sorted) {

@@ -1,0 +1,15 @@
+//! What the SDL window demos share (feature `sdl`).
+
+use embedded_graphics_simulator::{sdl2::Keycode, SimulatorEvent};
+
+/// Closing the window or pressing Escape.
+pub fn is_quit(event: &SimulatorEvent) -> bool {
+    matches!(
+        event,
+        SimulatorEvent::Quit
+            | SimulatorEvent::KeyDown {
+                keycode: Keycode::Escape,
+                ..
+            }
+    )
+}
