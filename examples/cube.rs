@@ -25,11 +25,6 @@ use std::{
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
-use trirast::{
-    depth::{DepthBuffer, DepthTarget},
-    texture::Texels,
-    Framebuffer,
-};
 
 const WIDTH: u32 = 240;
 const HEIGHT: u32 = 180;
@@ -56,16 +51,16 @@ impl Renderer {
     /// returns the display and the time spent drawing (the copy not included).
     fn render(&mut self, frame: u32, frames: u32) -> (&SimulatorDisplay<Rgb565>, Duration) {
         let start = Instant::now();
-        let side = cube::TEXTURE as u32;
-        let texture = Texels::new(&self.texels, side, side).unwrap();
-        let mut framebuffer = Framebuffer::new(&mut self.pixels, WIDTH, HEIGHT).unwrap();
-        framebuffer.clear(Rgb565::new(3, 8, 12)).unwrap();
-        let mut zbuffer = DepthBuffer::new(&mut self.depths, WIDTH, HEIGHT).unwrap();
-        zbuffer.clear(u16::MAX);
-        let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-        let mut scene = DepthTarget::new(&mut framebuffer, &mut zbuffer).unwrap();
-        cube::draw(&mut scene, area, texture, (frame, frames)).unwrap();
+        let (pixels, depths) = (&mut self.pixels, &mut self.depths);
+        cube::render(
+            &self.texels,
+            pixels,
+            depths,
+            (WIDTH, HEIGHT),
+            (frame, frames),
+        );
         let drawn = start.elapsed();
+        let area = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
         self.display
             .fill_contiguous(&area, self.pixels.iter().copied())
             .unwrap();

@@ -26,7 +26,6 @@ use fixed::types::I16F16;
 use tinybmp::Bmp;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
-    depth::{DepthBuffer, DepthTarget},
     shading::Fragment,
     texture::{Filter, ImageTexels, Texels},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
@@ -449,16 +448,9 @@ fn textured_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
 /// The spinning cube of `examples/cube.rs`, one frame, beside its depth buffer.
 fn depth_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let (w, h) = (200u32, 160u32);
-    let texels = cube::texels();
-    let side = cube::TEXTURE as u32;
-    let texture = Texels::new(&texels, side, side).unwrap();
-    let mut pixels = vec![Rgb565::new(3, 8, 12); (w * h) as usize];
-    let mut depths = vec![u16::MAX; (w * h) as usize];
-    let mut fb = Framebuffer::new(&mut pixels, w, h).unwrap();
-    let mut zbuffer = DepthBuffer::new(&mut depths, w, h).unwrap();
-    let area = Rectangle::new(Point::zero(), Size::new(w, h));
-    let mut scene = DepthTarget::new(&mut fb, &mut zbuffer).unwrap();
-    cube::draw(&mut scene, area, texture, (5, 24)).unwrap();
+    let mut pixels = vec![Rgb565::BLACK; (w * h) as usize];
+    let mut depths = vec![0; (w * h) as usize];
+    cube::render(&cube::texels(), &mut pixels, &mut depths, (w, h), (5, 24));
     let mut display = SimulatorDisplay::new(Size::new(2 * w + 8, h));
     blit_565(&pixels, w, &mut display);
     // Depths as gray: near is bright; the cleared background stays black.

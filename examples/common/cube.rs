@@ -7,18 +7,42 @@
 
 use embedded_graphics::{
     draw_target::DrawTarget,
-    geometry::Point,
+    geometry::{Point, Size},
     pixelcolor::{Rgb565, Rgb888},
     primitives::Rectangle,
 };
 use fixed::types::I16F16;
 use trirast::{
-    depth::DepthTarget,
+    depth::{DepthBuffer, DepthTarget},
     geometry::Viewport,
     mesh::{Cull, Mesh},
     texture::{Filter, Texels},
-    TextureStyle,
+    Framebuffer, TextureStyle,
 };
+
+/// The colour behind the cube.
+pub const BACKGROUND: Rgb565 = Rgb565::new(3, 8, 12);
+
+/// Clears `pixels` (`width` x `height`) to [`BACKGROUND`] and `depths` to the far plane, then
+/// draws frame `frame` of `frames` over the whole of them with `texels` (see [`texels`]).
+pub fn render(
+    texels: &[Rgb565],
+    pixels: &mut [Rgb565],
+    depths: &mut [u16],
+    (width, height): (u32, u32),
+    frame: (u32, u32),
+) {
+    let side = TEXTURE as u32;
+    let texture = Texels::new(texels, side, side).expect("texels() has TEXTURE x TEXTURE texels");
+    let mut framebuffer = Framebuffer::new(pixels, width, height).expect("pixels fit the size");
+    let _ = framebuffer.clear(BACKGROUND);
+    let mut zbuffer = DepthBuffer::new(depths, width, height).expect("depths fit the size");
+    zbuffer.clear(u16::MAX);
+    let area = Rectangle::new(Point::zero(), Size::new(width, height));
+    let mut scene = DepthTarget::new(&mut framebuffer, &mut zbuffer).expect("sizes match");
+    // The framebuffer cannot fail.
+    let _ = draw(&mut scene, area, texture, frame);
+}
 
 /// Draws frame `frame` of `frames` into `area` of `scene` (a target with its depth buffer):
 /// back faces culled, each face `texture`d, filtered bilinearly and lit per vertex.
