@@ -32,19 +32,6 @@ pub(crate) trait EdgeWalk<T>: Copy {
     fn advance(&mut self);
 }
 
-/// A lane together with its edge representation.
-pub(crate) trait WalkLane: Lane {
-    type Edge: EdgeWalk<Self>;
-}
-
-impl WalkLane for i32 {
-    type Edge = PackedStepper;
-}
-
-impl WalkLane for i64 {
-    type Edge = EdgeStepper<i64>;
-}
-
 /// Quotient and remainder of `dx / dy`, the per-row increments.
 ///
 /// Steep edges (`-dy <= dx < dy`, about half of all edges and most edges of small triangles)
@@ -174,6 +161,8 @@ impl<T: Lane> EdgeWalk<T> for EdgeStepper<T> {
 /// overflows the low half exactly when the error reaches zero, which adds the Bresenham carry to
 /// `x`. The low half is then below `dy < 2^31` (bit 31 clear), and adding `2^32 - dy` to it
 /// subtracts `dy` from the error and restores the bias without touching `x`.
+// 64-bit machines only: 32-bit ones have no 64-bit registers to pack into.
+#[cfg_attr(target_pointer_width = "32", allow(dead_code))]
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct PackedStepper {
     packed: u64,
@@ -227,6 +216,7 @@ impl EdgeWalk<i32> for PackedStepper {
 }
 
 /// `high` in the upper 32 bits, `low` in the lower (two's complement bits of each).
+#[cfg_attr(target_pointer_width = "32", allow(dead_code))]
 #[inline(always)]
 fn pack(high: i32, low: i32) -> u64 {
     (u64::from(high as u32) << 32) | u64::from(low as u32)

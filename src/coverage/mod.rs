@@ -17,9 +17,11 @@ pub use fill_rule::FillRule;
 
 use crate::{
     geometry::Triangle,
-    setup::{fits_fast_path, lane::FAST_LIMIT, sort_top_to_bottom, Clip, Prepared},
+    setup::{fits_fast_path, lane::FAST_LIMIT, sort_top_to_bottom, Clip, Lane, Prepared},
 };
-use edge::{EdgeWalk, Rounding, WalkLane};
+#[cfg(not(target_pointer_width = "32"))]
+use edge::PackedStepper;
+use edge::{EdgeStepper, EdgeWalk, Rounding};
 
 /// A run of covered pixels on one row: `len` pixels starting at `(x, y)`.
 ///
@@ -198,12 +200,44 @@ pub fn walk<K: SpanSink + ?Sized>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
+    walk_inlined(triangle, rule, clip, sink)
+}
+
+/// [`walk`] as a function of its own for each sink, as the depth path wants it: inlined there, its
+/// row loops leave no room to inline the target's span fill (measured on the band renderer).
+/// With `small-code` the walk is small and left to the compiler, as [`walk`] is.
+#[cfg_attr(not(feature = "small-code"), inline(never))]
+#[cfg_attr(feature = "small-code", inline)]
+pub(crate) fn walk_outlined<K: SpanSink + ?Sized>(
+    triangle: &Triangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    walk_inlined(triangle, rule, clip, sink)
+}
+
+/// [`walk`], inlined into the caller in optimised builds: the plain styles' draws, where a call
+/// costs tiny triangles several percent (`benches/ir.sh flat small`). Not forced into the depth
+/// path, whose band renderer grows and slows with it, nor into debug builds, whose test
+/// binaries take many times longer to build with it.
+#[cfg_attr(
+    all(not(feature = "small-code"), not(debug_assertions)),
+    inline(always)
+)]
+#[cfg_attr(any(feature = "small-code", debug_assertions), inline)]
+pub(crate) fn walk_inlined<K: SpanSink + ?Sized>(
+    triangle: &Triangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
     let sorted = sort_top_to_bottom(triangle.vertices);
     let [a, b, c] = sorted;
     if cfg!(feature = "small-code") {
         // One clipped variant of the row loop instead of three.
         return if fits_fast_path(&sorted) {
-            walk_lane::<i32, K, true, true>(sorted, rule, clip, sink)
+            walk_lane::<i32, FastEdge, K, true, true>(sorted, rule, clip, sink)
         } else {
             // Type-erased: one wide walk per error type rather than one per style and target
             // (a call per span is nothing next to 64-bit edge stepping).
@@ -224,12 +258,16 @@ pub fn walk<K: SpanSink + ?Sized>(
     let window = Window::new(clip);
     let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
     if inside_x && window.holds_y(a.y) && window.holds_y(c.y) && window.in_fast_range() {
-        walk_lane::<i32, K, false, false>(sorted, rule, clip, sink)
+        if cfg!(not(target_pointer_width = "32")) && c.y - a.y <= SHORT_ROWS {
+            walk_lane::<i32, EdgeStepper<i32>, K, false, false>(sorted, rule, clip, sink)
+        } else {
+            walk_lane::<i32, FastEdge, K, false, false>(sorted, rule, clip, sink)
+        }
     } else if fits_fast_path(&sorted) {
         if inside_x {
-            walk_lane::<i32, K, true, false>(sorted, rule, clip, sink)
+            walk_lane::<i32, FastEdge, K, true, false>(sorted, rule, clip, sink)
         } else {
-            walk_lane::<i32, K, true, true>(sorted, rule, clip, sink)
+            walk_lane::<i32, FastEdge, K, true, true>(sorted, rule, clip, sink)
         }
     } else {
         // Scalars, not references: the cold call should not force the triangle and window
@@ -243,6 +281,19 @@ pub fn walk<K: SpanSink + ?Sized>(
         )
     }
 }
+
+/// The edge stepper of the 32-bit paths. On 64-bit machines the packed stepper (position and
+/// error term in one register) steps a row in fewer instructions; 32-bit ones have no such
+/// registers.
+#[cfg(not(target_pointer_width = "32"))]
+type FastEdge = PackedStepper;
+#[cfg(target_pointer_width = "32")]
+type FastEdge = EdgeStepper<i32>;
+
+/// Triangles at most this many rows high take the plain stepper even on 64-bit machines: it
+/// starts in fewer instructions, which matters more than stepping for a few rows (measured with
+/// `benches/ir.sh flat small`).
+const SHORT_ROWS: i32 = 4;
 
 /// A window's half-open `i32` bounds, with the ends saturated at `i32::MAX` (which only makes
 /// the inside test more conservative).
@@ -306,13 +357,19 @@ fn walk_wide<K: SpanSink + ?Sized>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    walk_lane::<i64, K, true, true>(sorted, rule, &clip, sink)
+    walk_lane::<i64, EdgeStepper<i64>, K, true, true>(sorted, rule, &clip, sink)
 }
 
 /// Walks a triangle whose vertices are sorted top to bottom. `CLIP` is false only for
 /// triangles inside the window; `CLIP_X` is false for triangles inside it horizontally.
 #[inline(always)]
-fn walk_lane<T: WalkLane, K: SpanSink + ?Sized, const CLIP: bool, const CLIP_X: bool>(
+fn walk_lane<
+    T: Lane,
+    E: EdgeWalk<T>,
+    K: SpanSink + ?Sized,
+    const CLIP: bool,
+    const CLIP_X: bool,
+>(
     sorted: [Point; 3],
     rule: FillRule,
     clip: &Rectangle,
@@ -336,16 +393,17 @@ fn walk_lane<T: WalkLane, K: SpanSink + ?Sized, const CLIP: bool, const CLIP_X: 
         return Ok(());
     };
     if triangle.long_edge_left {
-        walk_rows::<T, K, CLIP, CLIP_X, true>(&triangle, rule, &clip, sink)
+        walk_rows::<T, E, K, CLIP, CLIP_X, true>(&triangle, rule, &clip, sink)
     } else {
-        walk_rows::<T, K, CLIP, CLIP_X, false>(&triangle, rule, &clip, sink)
+        walk_rows::<T, E, K, CLIP, CLIP_X, false>(&triangle, rule, &clip, sink)
     }
 }
 
 /// `CLIP` is false for triangles inside the window, which skip every clipping step.
 #[inline(always)]
 fn walk_rows<
-    T: WalkLane,
+    T: Lane,
+    E: EdgeWalk<T>,
     K: SpanSink + ?Sized,
     const CLIP: bool,
     const CLIP_X: bool,
@@ -384,11 +442,11 @@ fn walk_rows<
     };
 
     let mut long = if skip_apex {
-        let mut edge = T::Edge::start(top, bottom, long_rounding, top.1, true);
+        let mut edge = E::start(top, bottom, long_rounding, top.1, true);
         edge.advance();
         edge
     } else {
-        T::Edge::start(
+        E::start(
             top,
             bottom,
             long_rounding,
@@ -414,13 +472,13 @@ fn walk_rows<
             switch_row
         } - row;
         let short = if skip_apex {
-            let mut edge = T::Edge::start(top, middle, short_rounding, top.1, true);
+            let mut edge = E::start(top, middle, short_rounding, top.1, true);
             edge.advance();
             edge
         } else {
-            T::Edge::start(top, middle, short_rounding, row, rows > T::ONE)
+            E::start(top, middle, short_rounding, row, rows > T::ONE)
         };
-        rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)?;
+        rows_between::<T, E, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)?;
         row += rows;
         if row == end_row {
             return Ok(());
@@ -430,8 +488,8 @@ fn walk_rows<
     // Unclipped, this row is the middle vertex's (after a one-row top half or a flat top).
     let row = if CLIP { row } else { middle.1 };
     let rows = end_row - row;
-    let short = T::Edge::start(middle, bottom, short_rounding, row, rows > T::ONE);
-    rows_between::<T, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)
+    let short = E::start(middle, bottom, short_rounding, row, rows > T::ONE);
+    rows_between::<T, E, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)
 }
 
 /// Emits `rows` rows (at least one) from `row` down between the long edge and one short edge,
@@ -440,9 +498,15 @@ fn walk_rows<
 /// Specialised by which side the long edge is on, so each row costs two edge steps, a
 /// comparison and the sink.
 #[inline(always)]
-fn rows_between<T: WalkLane, K: SpanSink + ?Sized, const CLIP_X: bool, const LONG_LEFT: bool>(
-    long: &mut T::Edge,
-    mut short: T::Edge,
+fn rows_between<
+    T: Lane,
+    E: EdgeWalk<T>,
+    K: SpanSink + ?Sized,
+    const CLIP_X: bool,
+    const LONG_LEFT: bool,
+>(
+    long: &mut E,
+    mut short: E,
     mut row: T,
     rows: T,
     clip: &Clip<T>,

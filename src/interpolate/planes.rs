@@ -90,11 +90,12 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         // Gradient = numerator / area, to 2^-SETUP: numerator * 2^(SETUP - 16) (raw values
         // carry 2^-16) times 2^62 / |area|, shifted down by 62 - (SETUP - 16). The reciprocal
         // is below 2^62 and the products below 2^111.
-        let reciprocal = i128::from((1u64 << 62) / area.unsigned_abs());
-        let sign = area.signum();
+        // Signed and below 2^62 in magnitude: a 64 x 64 -> 128-bit multiply per gradient.
+        let reciprocal = ((1u64 << 62) / area.unsigned_abs()) as i64 * area.signum();
         let shift = 62 - (SETUP - STEP_BITS);
         let gradient = |numerator: i64| {
-            let scaled = (i128::from(numerator * sign) * reciprocal + (1 << (shift - 1))) >> shift;
+            let scaled =
+                (i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift;
             // Only the low 64 bits matter: evaluation wraps, and true values fit.
             scaled as i64
         };

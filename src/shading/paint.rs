@@ -10,7 +10,7 @@ use embedded_graphics::{draw_target::DrawTarget, pixelcolor::PixelColor, primiti
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
+    coverage::{walk_inlined, FillRule, Span, SpanSink},
     geometry::Triangle,
 };
 
@@ -178,7 +178,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
             target: self.target,
             painter,
         };
-        walk(self.triangle, self.rule, &self.window, &mut sink)
+        walk_inlined(self.triangle, self.rule, &self.window, &mut sink)
     }
 }
 
