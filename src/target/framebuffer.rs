@@ -337,7 +337,7 @@ where
 /// Runs are written in blocks of sixteen elements (two 16-byte stores for `u16` pixels), eight
 /// or single elements; a run's ragged end is one more block overlapping the previous one, and
 /// runs under eight are written from both ends at once.
-/// Runs up to 48 elements need no loop at all, so nothing is spent on loop set-up, and no loop
+/// Runs up to 64 elements need no loop at all, so nothing is spent on loop set-up, and no loop
 /// runs per element, which also keeps the compiler from vectorising one with masks.
 #[inline(always)]
 fn fill_run<S: Copy>(run: &mut [S], value: S) {
@@ -361,19 +361,33 @@ fn fill_run<S: Copy>(run: &mut [S], value: S) {
     } else if n < 16 {
         run[..8].copy_from_slice(&[value; 8]);
         run[n - 8..].copy_from_slice(&[value; 8]);
-    } else {
+    } else if n <= 32 {
         let block = [value; 16];
         run[..16].copy_from_slice(&block);
-        if n > 32 {
-            run[16..32].copy_from_slice(&block);
-            let mut start = 32;
-            while start + 16 < n {
-                run[start..start + 16].copy_from_slice(&block);
-                start += 16;
-            }
-        }
         run[n - 16..].copy_from_slice(&block);
+    } else {
+        fill_long_run(run, value);
     }
+}
+
+/// [`fill_run`] for runs over 32 elements, out of line: inlined, its loop keeps registers
+/// busy in the row loops of every triangle, and tiny triangles pay for spans they never have.
+#[inline(never)]
+fn fill_long_run<S: Copy>(run: &mut [S], value: S) {
+    let n = run.len();
+    let block = [value; 16];
+    // 32 elements a step and the ragged end as one more, overlapping, 32: runs up to 64
+    // need no loop iteration.
+    run[..16].copy_from_slice(&block);
+    run[16..32].copy_from_slice(&block);
+    let mut start = 32;
+    while start + 32 < n {
+        run[start..start + 16].copy_from_slice(&block);
+        run[start + 16..start + 32].copy_from_slice(&block);
+        start += 32;
+    }
+    run[n - 32..n - 16].copy_from_slice(&block);
+    run[n - 16..].copy_from_slice(&block);
 }
 
 /// Drops `count` items; stops early if the iterator ends.
