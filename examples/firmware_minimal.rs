@@ -1,19 +1,32 @@
 //! The smallest useful firmware: a flat and a Gouraud triangle drawn into a RAM framebuffer,
 //! whose checksum is printed over semihosting. A template for your own, and the build that
-//! `benches/firmware-size.sh` measures the library's flash cost with (built once as is and
-//! once with `FW_BASELINE=1`, which leaves the drawing out).
+//! `benches/firmware-size.sh` measures the library's flash cost with.
 //!
 //! ```text
 //! cargo run --release --target thumbv6m-none-eabi --example firmware_minimal --features firmware
 //! ```
+//!
+//! For measuring, `FW_MODE` (read at build time) draws one mode instead: `none` (nothing: the
+//! baseline every other build is measured against), `flat`, `gouraud`, `gouraud-z` (Gouraud
+//! through a depth buffer) or `texture` (every filter, wrap and modulation). Vertices, colours,
+//! depths, coordinates and options pass through `core::hint::black_box`, so the compiler
+//! cannot fold any of the library away: each build minus `none` is what that mode costs in
+//! flash.
 #![no_std]
 #![no_main]
+
+use core::hint::black_box;
 
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+use fixed::types::I16F16;
 use panic_halt as _;
-use trirast::{FlatStyle, Framebuffer, GouraudStyle, Triangle};
+use trirast::{
+    depth::{DepthBuffer, DepthTarget},
+    texture::{Filter, Texels, Wrap},
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
+};
 
 const WIDTH: u32 = 320;
 const HEIGHT: u32 = 240;
@@ -21,20 +34,63 @@ const HEIGHT: u32 = 240;
 #[entry]
 fn main() -> ! {
     let mut pixels = [Rgb565::BLACK; (WIDTH * HEIGHT) as usize];
-    if option_env!("FW_BASELINE").is_none() {
-        // In firmware this would be your display driver's DrawTarget (mipidsi, ssd1306, ...).
-        let mut display = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
-        let (a, b, c) = (Point::new(10, 10), Point::new(300, 40), Point::new(60, 220));
-        let _ = Triangle::new(a, b, c)
-            .into_styled(FlatStyle::new(Rgb565::CSS_ORANGE))
-            .draw(&mut display);
-        let colors = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE];
-        let _ = Triangle::new(Point::new(160, 0), Point::new(319, 239), Point::new(0, 200))
-            .into_styled(GouraudStyle::new(colors))
-            .draw(&mut display);
+    // In firmware this would be your display driver's DrawTarget (mipidsi, ssd1306, ...).
+    let mut display = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+    let triangle = black_box(Triangle::new(
+        Point::new(10, 10),
+        Point::new(300, 40),
+        Point::new(60, 220),
+    ));
+    let colors = black_box([Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE]);
+    match option_env!("FW_MODE") {
+        Some("none") => {}
+        Some("flat") => {
+            let _ = triangle
+                .into_styled(FlatStyle::new(colors[0]))
+                .draw(&mut display);
+        }
+        Some("gouraud") => {
+            let style = GouraudStyle::new(colors).with_dither(black_box(false));
+            let _ = triangle.into_styled(style).draw(&mut display);
+        }
+        Some("gouraud-z") => {
+            let mut depths = [u16::MAX; (WIDTH * HEIGHT) as usize];
+            let mut zbuffer = DepthBuffer::new(&mut depths, WIDTH, HEIGHT).unwrap();
+            let mut scene = DepthTarget::new(&mut display, &mut zbuffer).unwrap();
+            let _ = scene.draw(
+                &triangle,
+                black_box([100, 2000, 30000]),
+                &GouraudStyle::new(colors).with_dither(black_box(false)),
+            );
+        }
+        Some("texture") => {
+            let texels = black_box([Rgb565::WHITE, Rgb565::BLACK, Rgb565::RED, Rgb565::BLUE]);
+            let texture = Texels::new(&texels, 2, 2).unwrap();
+            let at = |u: i32, v: i32| [I16F16::from_num(u), I16F16::from_num(v)];
+            let coordinates = black_box([at(0, 0), at(5, 0), at(0, 7)]);
+            for filter in [Filter::Nearest, Filter::Bilinear] {
+                for wrap in [Wrap::Clamp, Wrap::Repeat] {
+                    for modulation in [None, Some(colors)] {
+                        let mut style = TextureStyle::new(texture, coordinates)
+                            .with_filter(black_box(filter))
+                            .with_wrap(black_box(wrap));
+                        style.modulation = black_box(modulation);
+                        let _ = triangle.into_styled(style).draw(&mut display);
+                    }
+                }
+            }
+        }
+        _ => {
+            let _ = triangle
+                .into_styled(FlatStyle::new(Rgb565::CSS_ORANGE))
+                .draw(&mut display);
+            let _ = Triangle::new(Point::new(160, 0), Point::new(319, 239), Point::new(0, 200))
+                .into_styled(GouraudStyle::new(colors))
+                .draw(&mut display);
+        }
     }
     let mut sum: u32 = 0x811C_9DC5;
-    for p in pixels {
+    for &p in black_box(&pixels[..]) {
         for byte in p.into_storage().to_le_bytes() {
             sum = (sum ^ u32::from(byte)).wrapping_mul(0x0100_0193);
         }

@@ -18,20 +18,6 @@ pub(crate) enum Rounding {
     FloorPlusOne,
 }
 
-/// An edge being walked one row at a time; each lane has its own representation.
-pub(crate) trait EdgeWalk<T>: Copy {
-    /// Starts the edge from `upper` to `lower` (`upper.1 < lower.1`) at `row`, which must lie
-    /// in `upper.1..=lower.1`. When `will_advance` is false the edge is only read at `row`,
-    /// and its division may be skipped.
-    fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T, will_advance: bool) -> Self;
-
-    /// The bound on the current row.
-    fn x(&self) -> T;
-
-    /// Moves to the next row.
-    fn advance(&mut self);
-}
-
 /// Quotient and remainder of `dx / dy`, the per-row increments.
 ///
 /// Steep edges (`-dy <= dx < dy`, about half of all edges and most edges of small triangles)
@@ -85,7 +71,8 @@ fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_i
         Rounding::FloorPlusOne => dy,
     };
     let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
-    let (quotient, rem) = div_rem_u64(numerator, dy as u64);
+    // `dy` is positive; `max` says so, which drops the division-by-zero panic.
+    let (quotient, rem) = div_rem_u64(numerator, dy.max(1) as u64);
     // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
     let x = xa.to_i64() + step.to_i64() * n + quotient as i64;
     (T::from_i64(x), T::from_i64(rem as i64 - dy))
@@ -101,7 +88,7 @@ fn div_rem_u64(numerator: u64, divisor: u64) -> (u64, u64) {
     }
 }
 
-/// The plain stepper: bound, error term and increments in separate words (the 64-bit lane).
+/// An edge being walked one row at a time: bound, error term and increments.
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct EdgeStepper<T> {
     x: T,
@@ -114,15 +101,11 @@ pub(crate) struct EdgeStepper<T> {
     dy: T,
 }
 
-impl<T: Lane> EdgeWalk<T> for EdgeStepper<T> {
+impl<T: Lane> EdgeStepper<T> {
+    /// Starts the edge from `upper` to `lower` (`upper.1 < lower.1`) at `row`, which must lie
+    /// in `upper.1..=lower.1`.
     #[inline(always)]
-    fn start(
-        upper: (T, T),
-        lower: (T, T),
-        rounding: Rounding,
-        row: T,
-        _will_advance: bool,
-    ) -> Self {
+    pub(crate) fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T) -> Self {
         let (xa, ya) = upper;
         let dy = lower.1 - ya;
         debug_assert!(dy > T::ZERO && row >= ya && row <= lower.1);
@@ -137,13 +120,15 @@ impl<T: Lane> EdgeWalk<T> for EdgeStepper<T> {
         }
     }
 
+    /// The bound on the current row.
     #[inline(always)]
-    fn x(&self) -> T {
+    pub(crate) fn x(&self) -> T {
         self.x
     }
 
+    /// Moves to the next row.
     #[inline(always)]
-    fn advance(&mut self) {
+    pub(crate) fn advance(&mut self) {
         self.x += self.step;
         self.error += self.remainder;
         if self.error >= T::ZERO {
@@ -153,73 +138,43 @@ impl<T: Lane> EdgeWalk<T> for EdgeStepper<T> {
     }
 }
 
-/// The 32-bit lane's stepper: bound and error term packed in one `u64`, so that one addition
-/// steps both and carries the error overflow into the bound.
-///
-/// The high half holds `x`; the low half holds the error term biased by `2^32` (the error is
-/// in `-dy..0`, so the low half is in `2^32 - dy..2^32`). Adding `(step << 32) | remainder`
-/// overflows the low half exactly when the error reaches zero, which adds the Bresenham carry to
-/// `x`. The low half is then below `dy < 2^31` (bit 31 clear), and adding `2^32 - dy` to it
-/// subtracts `dy` from the error and restores the bias without touching `x`.
-// 64-bit machines only: 32-bit ones have no 64-bit registers to pack into.
-#[cfg_attr(target_pointer_width = "32", allow(dead_code))]
+/// An edge evaluated at any row directly, without stepping state: the wide walk's, whose rows
+/// are few next to the code a 64-bit stepper would take on a 32-bit core.
 #[derive(Copy, Clone, Debug)]
-pub(crate) struct PackedStepper {
-    packed: u64,
-    increment: u64,
-    rebias: u64,
+pub(crate) struct ExactEdge<T> {
+    xa: T,
+    ya: T,
+    dy: T,
+    increments: (T, T),
+    rounding: Rounding,
 }
 
-impl EdgeWalk<i32> for PackedStepper {
-    #[inline(always)]
-    fn start(
-        upper: (i32, i32),
-        lower: (i32, i32),
-        rounding: Rounding,
-        row: i32,
-        will_advance: bool,
-    ) -> Self {
-        let (xa, ya) = upper;
-        let dy = lower.1 - ya;
-        debug_assert!(dy > 0 && row >= ya && row <= lower.1);
-        let rows_in = row - ya;
-        // The division is skipped for edges read on one row only, e.g. a triangle's top half
-        // when it is one row high.
-        let (step, remainder) = if will_advance || rows_in != 0 {
-            increments(lower.0 - xa, dy)
-        } else {
-            (0, 0)
-        };
-        let (x, error) = bound_at(xa, dy, (step, remainder), rounding, rows_in);
+impl<T: Lane> ExactEdge<T> {
+    /// The edge from `upper` to `lower` (`upper.1 < lower.1`).
+    #[inline]
+    pub(crate) fn new(upper: (T, T), lower: (T, T), rounding: Rounding) -> Self {
+        let dy = lower.1 - upper.1;
         Self {
-            packed: pack(x, error),
-            increment: pack(step, remainder),
-            rebias: (1u64 << 32) - dy as u64,
+            xa: upper.0,
+            ya: upper.1,
+            dy,
+            increments: increments(lower.0 - upper.0, dy),
+            rounding,
         }
     }
 
-    #[inline(always)]
-    fn x(&self) -> i32 {
-        (self.packed >> 32) as i32
+    /// The bound on `row`, in `upper.1..=lower.1`.
+    #[inline]
+    pub(crate) fn at(&self, row: T) -> T {
+        bound_at(
+            self.xa,
+            self.dy,
+            self.increments,
+            self.rounding,
+            row - self.ya,
+        )
+        .0
     }
-
-    #[inline(always)]
-    fn advance(&mut self) {
-        let stepped = self.packed.wrapping_add(self.increment);
-        // Bit 31 clear: the error overflowed (and `x` took the carry).
-        self.packed = if (stepped as u32 as i32) < 0 {
-            stepped
-        } else {
-            stepped.wrapping_add(self.rebias)
-        };
-    }
-}
-
-/// `high` in the upper 32 bits, `low` in the lower (two's complement bits of each).
-#[cfg_attr(target_pointer_width = "32", allow(dead_code))]
-#[inline(always)]
-fn pack(high: i32, low: i32) -> u64 {
-    (u64::from(high as u32) << 32) | u64::from(low as u32)
 }
 
 #[cfg(test)]
@@ -237,7 +192,7 @@ mod tests {
         i64::try_from(bound).unwrap() + xa
     }
 
-    fn check<T: Lane, E: EdgeWalk<T>>(a: (i32, i32), b: (i32, i32)) {
+    fn check<T: Lane>(a: (i32, i32), b: (i32, i32)) {
         let lane = |p: (i32, i32)| (T::from_i32(p.0), T::from_i32(p.1));
         let rows = i64::from(b.1) - i64::from(a.1);
         for rounding in [Rounding::Ceil, Rounding::FloorPlusOne] {
@@ -245,7 +200,7 @@ mod tests {
             let starts: [i64; 4] = [0, 1.min(rows), rows / 2, rows];
             for start in starts {
                 let row = T::from_i64(i64::from(a.1) + start);
-                let mut edge = E::start(lane(a), lane(b), rounding, row, true);
+                let mut edge = EdgeStepper::start(lane(a), lane(b), rounding, row);
                 let mut n = start;
                 loop {
                     let want = exact(
@@ -257,23 +212,14 @@ mod tests {
                         i64::from(a.1) + n,
                     );
                     assert_eq!(edge.x().to_i64(), want, "{a:?}->{b:?} {rounding:?} row {n}");
+                    let exact = ExactEdge::new(lane(a), lane(b), rounding);
+                    assert_eq!(exact.at(T::from_i64(i64::from(a.1) + n)).to_i64(), want);
                     if n == rows || n > start + 50 {
                         break;
                     }
                     edge.advance();
                     n += 1;
                 }
-                // Read-only start: same bound, division skipped.
-                let read_only = E::start(lane(a), lane(b), rounding, row, false);
-                let want = exact(
-                    a.0.into(),
-                    a.1.into(),
-                    b.0.into(),
-                    b.1.into(),
-                    rounding,
-                    i64::from(a.1) + start,
-                );
-                assert_eq!(read_only.x().to_i64(), want);
             }
         }
     }
@@ -290,9 +236,8 @@ mod tests {
             ((0, 0), (-1, 1000)),
         ];
         for (a, b) in edges {
-            check::<i32, PackedStepper>(a, b);
-            check::<i32, EdgeStepper<i32>>(a, b);
-            check::<i64, EdgeStepper<i64>>(a, b);
+            check::<i32>(a, b);
+            check::<i64>(a, b);
         }
         let limit = crate::setup::lane::FAST_LIMIT;
         for (a, b) in [
@@ -300,11 +245,10 @@ mod tests {
             ((limit, -limit), (-limit, limit - 1)),
             ((limit, -limit), (-limit, -limit + 1)),
         ] {
-            check::<i32, PackedStepper>(a, b);
-            check::<i32, EdgeStepper<i32>>(a, b);
+            check::<i32>(a, b);
         }
-        check::<i64, EdgeStepper<i64>>((i32::MIN, i32::MIN), (i32::MAX, i32::MAX));
-        check::<i64, EdgeStepper<i64>>((i32::MAX, i32::MIN), (i32::MIN, i32::MAX));
-        check::<i64, EdgeStepper<i64>>((i32::MAX, i32::MIN), (i32::MIN, i32::MIN + 1));
+        check::<i64>((i32::MIN, i32::MIN), (i32::MAX, i32::MAX));
+        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MAX));
+        check::<i64>((i32::MAX, i32::MIN), (i32::MIN, i32::MIN + 1));
     }
 }

@@ -17,11 +17,9 @@ pub use fill_rule::FillRule;
 
 use crate::{
     geometry::Triangle,
-    setup::{fits_fast_path, lane::FAST_LIMIT, sort_top_to_bottom, Clip, Lane, Prepared},
+    setup::{fits_fast_path, sort_top_to_bottom, Clip, Lane, Prepared},
 };
-#[cfg(not(target_pointer_width = "32"))]
-use edge::PackedStepper;
-use edge::{EdgeStepper, EdgeWalk, Rounding};
+use edge::{EdgeStepper, ExactEdge, Rounding};
 
 /// A run of covered pixels on one row: `len` pixels starting at `(x, y)`.
 ///
@@ -107,7 +105,7 @@ pub trait SpanSink {
     fn span(&mut self, span: Span) -> Result<(), Self::Error>;
 }
 
-impl<E, F: FnMut(Span) -> Result<(), E>> SpanSink for F {
+impl<E, F: FnMut(Span) -> Result<(), E> + ?Sized> SpanSink for F {
     type Error = E;
 
     #[inline(always)]
@@ -200,154 +198,173 @@ pub fn walk<K: SpanSink + ?Sized>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    walk_inlined(triangle, rule, clip, sink)
-}
-
-/// [`walk`] as a function of its own for each sink, as the depth path wants it: inlined there, its
-/// row loops leave no room to inline the target's span fill (measured on the band renderer).
-/// With `small-code` the walk is small and left to the compiler, as [`walk`] is.
-#[cfg_attr(not(feature = "small-code"), inline(never))]
-#[cfg_attr(feature = "small-code", inline)]
-pub(crate) fn walk_outlined<K: SpanSink + ?Sized>(
-    triangle: &Triangle,
-    rule: FillRule,
-    clip: &Rectangle,
-    sink: &mut K,
-) -> Result<(), K::Error> {
-    walk_inlined(triangle, rule, clip, sink)
-}
-
-/// [`walk`], inlined into the caller in optimised builds: the plain styles' draws, where a call
-/// costs tiny triangles several percent (`benches/ir.sh flat small`). Not forced into the depth
-/// path, whose band renderer grows and slows with it, nor into debug builds, whose test
-/// binaries take many times longer to build with it.
-#[cfg_attr(
-    all(not(feature = "small-code"), not(debug_assertions)),
-    inline(always)
-)]
-#[cfg_attr(any(feature = "small-code", debug_assertions), inline)]
-pub(crate) fn walk_inlined<K: SpanSink + ?Sized>(
-    triangle: &Triangle,
-    rule: FillRule,
-    clip: &Rectangle,
-    sink: &mut K,
-) -> Result<(), K::Error> {
     let sorted = sort_top_to_bottom(triangle.vertices);
-    let [a, b, c] = sorted;
-    if cfg!(feature = "small-code") {
-        // One clipped variant of the row loop instead of three.
-        return if fits_fast_path(&sorted) {
-            walk_lane::<i32, FastEdge, K, true, true>(sorted, rule, clip, sink)
-        } else {
-            // Type-erased: one wide walk per error type rather than one per style and target
-            // (a call per span is nothing next to 64-bit edge stepping).
-            let (tl, size) = (clip.top_left, clip.size);
-            let mut erased: &mut dyn FnMut(Span) -> Result<(), K::Error> =
-                &mut move |span| sink.span(span);
-            walk_wide(
-                [a.x, a.y, b.x, b.y, c.x, c.y],
-                rule,
-                [tl.x, tl.y, size.width as i32, size.height as i32],
-                &mut erased,
-            )
-        };
-    }
-    // Span bounds lie within x_min..=x_max + 1 and rows within a.y..=c.y: a triangle inside
-    // the window needs no clipping at all, and its edges all start at their upper vertex.
-    // Inside a window within the fast range, it is within the fast range too.
-    let window = Window::new(clip);
-    let inside_x = window.holds_x(a.x) && window.holds_x(b.x) && window.holds_x(c.x);
-    if inside_x && window.holds_y(a.y) && window.holds_y(c.y) && window.in_fast_range() {
-        if cfg!(not(target_pointer_width = "32")) && c.y - a.y <= SHORT_ROWS {
-            walk_lane::<i32, EdgeStepper<i32>, K, false, false>(sorted, rule, clip, sink)
-        } else {
-            walk_lane::<i32, FastEdge, K, false, false>(sorted, rule, clip, sink)
-        }
-    } else if fits_fast_path(&sorted) {
-        if inside_x {
-            walk_lane::<i32, FastEdge, K, true, false>(sorted, rule, clip, sink)
-        } else {
-            walk_lane::<i32, FastEdge, K, true, true>(sorted, rule, clip, sink)
-        }
+    if fits_fast_path(&sorted) {
+        walk_fast(sorted, rule, clip, sink)
     } else {
-        // Scalars, not references: the cold call should not force the triangle and window
-        // into memory on the fast path.
+        // Rare: out of line, and type-erased, so there is one wide walk per error type rather
+        // than one per style and target. Scalars, not references: the cold call should not
+        // force the triangle and window into memory on the fast path.
+        let [a, b, c] = sorted;
         let (tl, size) = (clip.top_left, clip.size);
         walk_wide(
             [a.x, a.y, b.x, b.y, c.x, c.y],
             rule,
             [tl.x, tl.y, size.width as i32, size.height as i32],
-            sink,
+            &mut |span| sink.span(span),
         )
     }
 }
 
-/// The edge stepper of the 32-bit paths. On 64-bit machines the packed stepper (position and
-/// error term in one register) steps a row in fewer instructions; 32-bit ones have no such
-/// registers.
-#[cfg(not(target_pointer_width = "32"))]
-type FastEdge = PackedStepper;
-#[cfg(target_pointer_width = "32")]
-type FastEdge = EdgeStepper<i32>;
-
-/// Triangles at most this many rows high take the plain stepper even on 64-bit machines: it
-/// starts in fewer instructions, which matters more than stepping for a few rows (measured with
-/// `benches/ir.sh flat small`).
-const SHORT_ROWS: i32 = 4;
-
-/// A window's half-open `i32` bounds, with the ends saturated at `i32::MAX` (which only makes
-/// the inside test more conservative).
-#[derive(Copy, Clone)]
-struct Window {
-    x0: i32,
-    x1: i32,
-    y0: i32,
-    y1: i32,
+/// The rows a triangle covers inside a window, and how its edges round there: what the fast
+/// and the wide walk share.
+struct RowPlan<T> {
+    triangle: Prepared<T>,
+    clip: Clip<T>,
+    /// First row to emit and the end of the rows (exclusive).
+    first: T,
+    end: T,
+    /// The first row the lower short edge serves (never reached with a flat bottom).
+    switch: T,
+    /// Under the top-left rule, the first row is the one below a lone top vertex, whose own row
+    /// is empty.
+    skip_apex: bool,
+    long_rounding: Rounding,
+    short_rounding: Rounding,
 }
 
-impl Window {
+impl<T: Lane> RowPlan<T> {
+    /// `None` when nothing of the triangle is inside the window (or it is degenerate).
     #[inline(always)]
-    fn new(area: &Rectangle) -> Self {
-        let end = |start: i32, len: u32| {
-            i32::try_from(i64::from(start) + i64::from(len)).unwrap_or(i32::MAX)
+    fn new(sorted: [Point; 3], rule: FillRule, clip: &Rectangle) -> Option<Self> {
+        let clip = Clip::<T>::from_rectangle(clip)?;
+        let triangle = Prepared::<T>::from_sorted(sorted)?;
+        let [top, middle, bottom] = triangle.sorted;
+        // Top-left: rows top..bottom (the bottom vertex row is an apex or a bottom edge, both
+        // out). Inclusive: rows top..=bottom.
+        let (right_rounding, rows_end) = match rule {
+            FillRule::TopLeft => (Rounding::Ceil, bottom.1),
+            FillRule::Inclusive => (Rounding::FloorPlusOne, bottom.1 + T::ONE),
         };
-        Self {
-            x0: area.top_left.x,
-            x1: end(area.top_left.x, area.size.width),
-            y0: area.top_left.y,
-            y1: end(area.top_left.y, area.size.height),
+        let mut first = top.1.max(clip.y0);
+        let end = rows_end.min(clip.y1);
+        let skip_apex = rule == FillRule::TopLeft && first == top.1 && top.1 < middle.1;
+        if skip_apex {
+            first += T::ONE;
+        }
+        if first >= end {
+            return None;
+        }
+        let (long_rounding, short_rounding) = if triangle.long_edge_left {
+            (Rounding::Ceil, right_rounding)
+        } else {
+            (right_rounding, Rounding::Ceil)
+        };
+        // The upper short edge serves rows above the middle vertex, the lower one the rest.
+        // With a flat bottom (which only the inclusive rule reaches) the upper edge also serves
+        // the middle row, where it ends exactly.
+        let switch = if middle.1 < bottom.1 { middle.1 } else { end };
+        Some(Self {
+            triangle,
+            clip,
+            first,
+            end,
+            switch,
+            skip_apex,
+            long_rounding,
+            short_rounding,
+        })
+    }
+
+    /// Emits the span between bounds `l` and `r` on `row`, clipped to the window, if any.
+    #[inline(always)]
+    fn emit<K: SpanSink + ?Sized>(&self, l: T, r: T, row: T, sink: &mut K) -> Result<(), K::Error> {
+        let l = l.max(self.clip.x0);
+        let r = r.min(self.clip.x1);
+        if l < r {
+            // Values inside the window, whose coordinates and width fit.
+            let span = Span {
+                x: l.to_i64() as i32,
+                y: row.to_i64() as i32,
+                len: T::len_u32(r, l),
+            };
+            sink.span(span)?;
+        }
+        Ok(())
+    }
+}
+
+/// The fast walk, in 32-bit arithmetic: the one row loop of the crate. Rows and columns are
+/// clipped by bounds computed once, so triangles inside the window and triangles crossing its
+/// edges take the same code; each row costs two edge steps, a clip and the sink.
+#[inline(always)]
+fn walk_fast<K: SpanSink + ?Sized>(
+    sorted: [Point; 3],
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let Some(plan) = RowPlan::<i32>::new(sorted, rule, clip) else {
+        return Ok(());
+    };
+    let [top, middle, bottom] = plan.triangle.sorted;
+    let mut row = plan.first;
+    // Edges start at `row`; after a skipped apex, from the vertex and one step down, which
+    // needs no division.
+    let start = |upper: (i32, i32), lower: (i32, i32), rounding: Rounding| {
+        if plan.skip_apex && upper == top {
+            let mut edge = EdgeStepper::start(upper, lower, rounding, top.1);
+            edge.advance();
+            edge
+        } else {
+            EdgeStepper::start(upper, lower, rounding, row)
+        }
+    };
+    let long = start(top, bottom, plan.long_rounding);
+    let short = if row < plan.switch {
+        start(top, middle, plan.short_rounding)
+    } else {
+        start(middle, bottom, plan.short_rounding)
+    };
+    let long_left = plan.triangle.long_edge_left;
+    let (mut left, mut right) = if long_left {
+        (long, short)
+    } else {
+        (short, long)
+    };
+    loop {
+        plan.emit(left.x(), right.x(), row, sink)?;
+        row += 1;
+        if row == plan.end {
+            return Ok(());
+        }
+        if row == plan.switch {
+            // The short edge turns at the middle vertex, where it starts without a division.
+            let lower = EdgeStepper::start(middle, bottom, plan.short_rounding, row);
+            if long_left {
+                left.advance();
+                right = lower;
+            } else {
+                right.advance();
+                left = lower;
+            }
+        } else {
+            left.advance();
+            right.advance();
         }
     }
-
-    /// `x0 <= x < x1`, in one unsigned comparison.
-    #[inline(always)]
-    fn holds_x(self, x: i32) -> bool {
-        (x.wrapping_sub(self.x0) as u32) < self.x1.wrapping_sub(self.x0) as u32
-    }
-
-    /// `y0 <= y < y1`, in one unsigned comparison.
-    #[inline(always)]
-    fn holds_y(self, y: i32) -> bool {
-        (y.wrapping_sub(self.y0) as u32) < self.y1.wrapping_sub(self.y0) as u32
-    }
-
-    /// True when every pixel of the window lies in the fast range.
-    #[inline(always)]
-    fn in_fast_range(self) -> bool {
-        let limit = FAST_LIMIT + 1;
-        self.x0 >= -limit && self.y0 >= -limit && self.x1 <= limit && self.y1 <= limit
-    }
 }
 
-/// The wide path, kept out of line: rare, and it should not bloat the fast path's caller.
+/// The wide walk, for vertices beyond the fast range: 64-bit arithmetic, each row's bounds
+/// computed exactly from the edge's start (no stepping state), out of line and type-erased.
 #[inline(never)]
 #[cold]
-fn walk_wide<K: SpanSink + ?Sized>(
+fn walk_wide<E>(
     v: [i32; 6],
     rule: FillRule,
     clip: [i32; 4],
-    sink: &mut K,
-) -> Result<(), K::Error> {
+    sink: &mut dyn FnMut(Span) -> Result<(), E>,
+) -> Result<(), E> {
     let sorted = [
         Point::new(v[0], v[1]),
         Point::new(v[2], v[3]),
@@ -357,191 +374,30 @@ fn walk_wide<K: SpanSink + ?Sized>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    walk_lane::<i64, EdgeStepper<i64>, K, true, true>(sorted, rule, &clip, sink)
-}
-
-/// Walks a triangle whose vertices are sorted top to bottom. `CLIP` is false only for
-/// triangles inside the window; `CLIP_X` is false for triangles inside it horizontally.
-#[inline(always)]
-fn walk_lane<
-    T: Lane,
-    E: EdgeWalk<T>,
-    K: SpanSink + ?Sized,
-    const CLIP: bool,
-    const CLIP_X: bool,
->(
-    sorted: [Point; 3],
-    rule: FillRule,
-    clip: &Rectangle,
-    sink: &mut K,
-) -> Result<(), K::Error> {
-    let clip = if CLIP {
-        match Clip::<T>::from_rectangle(clip) {
-            Some(clip) => clip,
-            None => return Ok(()),
-        }
-    } else {
-        // Unused: nothing is clipped.
-        Clip {
-            x0: T::ZERO,
-            x1: T::ZERO,
-            y0: T::ZERO,
-            y1: T::ZERO,
-        }
-    };
-    let Some(triangle) = Prepared::<T>::from_sorted(sorted) else {
+    let Some(plan) = RowPlan::<i64>::new(sorted, rule, &clip) else {
         return Ok(());
     };
-    if triangle.long_edge_left {
-        walk_rows::<T, E, K, CLIP, CLIP_X, true>(&triangle, rule, &clip, sink)
-    } else {
-        walk_rows::<T, E, K, CLIP, CLIP_X, false>(&triangle, rule, &clip, sink)
-    }
-}
-
-/// `CLIP` is false for triangles inside the window, which skip every clipping step.
-#[inline(always)]
-fn walk_rows<
-    T: Lane,
-    E: EdgeWalk<T>,
-    K: SpanSink + ?Sized,
-    const CLIP: bool,
-    const CLIP_X: bool,
-    const LONG_LEFT: bool,
->(
-    triangle: &Prepared<T>,
-    rule: FillRule,
-    clip: &Clip<T>,
-    sink: &mut K,
-) -> Result<(), K::Error> {
-    let [top, middle, bottom] = triangle.sorted;
-    // Top-left: rows top..bottom (the bottom vertex row is an apex or a bottom edge, both out).
-    // Inclusive: rows top..=bottom.
-    let (right_rounding, rows_end) = match rule {
-        FillRule::TopLeft => (Rounding::Ceil, bottom.1),
-        FillRule::Inclusive => (Rounding::FloorPlusOne, bottom.1 + T::ONE),
-    };
-    let (mut first_row, end_row) = if CLIP {
-        (top.1.max(clip.y0), rows_end.min(clip.y1))
-    } else {
-        (top.1, rows_end)
-    };
-    // Under the top-left rule the row of a lone top vertex is empty (its span is
-    // `x0..x0`): start one row lower, stepping the edges once instead of walking a row.
-    let skip_apex = rule == FillRule::TopLeft && first_row == top.1 && top.1 < middle.1;
-    if skip_apex {
-        first_row += T::ONE;
-    }
-    if first_row >= end_row {
-        return Ok(());
-    }
-    let (long_rounding, short_rounding) = if LONG_LEFT {
-        (Rounding::Ceil, right_rounding)
-    } else {
-        (right_rounding, Rounding::Ceil)
-    };
-
-    let mut long = if skip_apex {
-        let mut edge = E::start(top, bottom, long_rounding, top.1, true);
-        edge.advance();
-        edge
-    } else {
-        E::start(
-            top,
-            bottom,
-            long_rounding,
-            first_row,
-            // Unclipped, the long edge nearly always advances: skip the test.
-            !CLIP || end_row - first_row > T::ONE,
-        )
-    };
-    // The upper short edge serves rows above the middle vertex, the lower one the rest. With a
-    // flat bottom (which only the inclusive rule reaches) the upper edge also serves the middle
-    // row, where it ends exactly; the lower edge is then never started.
-    let switch_row = if middle.1 < bottom.1 {
-        middle.1
-    } else {
-        end_row
-    };
-    let mut row = first_row;
-    if row < switch_row {
-        // Unclipped, the middle row never lies past the end.
-        let rows = if CLIP {
-            switch_row.min(end_row)
+    let [top, middle, bottom] = plan.triangle.sorted;
+    let long = ExactEdge::new(top, bottom, plan.long_rounding);
+    // A flat top or bottom leaves its short edge unused: the long edge stands in.
+    let short = |upper: (i64, i64), lower: (i64, i64)| {
+        if upper.1 < lower.1 {
+            ExactEdge::new(upper, lower, plan.short_rounding)
         } else {
-            switch_row
-        } - row;
-        let short = if skip_apex {
-            let mut edge = E::start(top, middle, short_rounding, top.1, true);
-            edge.advance();
-            edge
+            long
+        }
+    };
+    let (upper, lower) = (short(top, middle), short(middle, bottom));
+    let mut row = plan.first;
+    while row < plan.end {
+        let short = if row < plan.switch { &upper } else { &lower };
+        let (l, r) = if plan.triangle.long_edge_left {
+            (long.at(row), short.at(row))
         } else {
-            E::start(top, middle, short_rounding, row, rows > T::ONE)
+            (short.at(row), long.at(row))
         };
-        rows_between::<T, E, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)?;
-        row += rows;
-        if row == end_row {
-            return Ok(());
-        }
-        long.advance();
+        plan.emit(l, r, row, sink)?;
+        row += 1;
     }
-    // Unclipped, this row is the middle vertex's (after a one-row top half or a flat top).
-    let row = if CLIP { row } else { middle.1 };
-    let rows = end_row - row;
-    let short = E::start(middle, bottom, short_rounding, row, rows > T::ONE);
-    rows_between::<T, E, K, CLIP_X, LONG_LEFT>(&mut long, short, row, rows, clip, sink)
-}
-
-/// Emits `rows` rows (at least one) from `row` down between the long edge and one short edge,
-/// leaving the long edge on the last of them.
-///
-/// Specialised by which side the long edge is on, so each row costs two edge steps, a
-/// comparison and the sink.
-#[inline(always)]
-fn rows_between<
-    T: Lane,
-    E: EdgeWalk<T>,
-    K: SpanSink + ?Sized,
-    const CLIP_X: bool,
-    const LONG_LEFT: bool,
->(
-    long: &mut E,
-    mut short: E,
-    mut row: T,
-    rows: T,
-    clip: &Clip<T>,
-    sink: &mut K,
-) -> Result<(), K::Error> {
-    let mut edge = *long;
-    let last = row + rows - T::ONE;
-    let result = loop {
-        let (mut l, mut r) = if LONG_LEFT {
-            (edge.x(), short.x())
-        } else {
-            (short.x(), edge.x())
-        };
-        if CLIP_X {
-            l = l.max(clip.x0);
-            r = r.min(clip.x1);
-        }
-        if l < r {
-            // Values inside the window, whose coordinates and width fit.
-            let span = Span {
-                x: l.to_i64() as i32,
-                y: row.to_i64() as i32,
-                len: T::len_u32(r, l),
-            };
-            if let Err(e) = sink.span(span) {
-                break Err(e);
-            }
-        }
-        if row == last {
-            break Ok(());
-        }
-        row += T::ONE;
-        edge.advance();
-        short.advance();
-    };
-    *long = edge;
-    result
+    Ok(())
 }

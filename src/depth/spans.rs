@@ -5,7 +5,7 @@ use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
 
 use super::{DepthBuffer, DepthTest};
 use crate::{
-    coverage::{walk_outlined, FillRule, Span, SpanSink},
+    coverage::{walk, FillRule, Span, SpanSink},
     geometry::Triangle,
     interpolate::Planes,
     shading::paint::{PaintVisitor, Painter},
@@ -48,7 +48,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
             slack,
             write: self.write,
         };
-        walk_outlined(self.triangle, self.rule, &self.window, &mut sink)
+        walk(self.triangle, self.rule, &self.window, &mut sink)
     }
 }
 
@@ -73,10 +73,7 @@ where
 {
     type Error = D::Error;
 
-    // Painting is most of the code: kept out of the walk's row loops (of which there are
-    // several variants) when code size matters.
-    #[cfg_attr(feature = "small-code", inline(never))]
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    #[inline]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
         // Spans lie in the window, which the buffer covers: the offsets are in range.
         let x = span.x.wrapping_sub(self.origin.0) as u32;

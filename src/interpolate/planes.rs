@@ -120,32 +120,13 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let [p0, p1, p2] = vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
-        let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
-        let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
-        // Deltas below 2^33, raw values below 2^34: every product below 2^100.
-        let area = ex1 * ey2 - ex2 * ey1;
-        if area == 0 {
-            return None;
-        }
-        let (rx, ry) = (
-            i128::from(reference.x) - p0.0,
-            i128::from(reference.y) - p0.1,
-        );
-        let scale = 1i128 << (SETUP - STEP_BITS);
         let mut planes = Self::empty(reference);
         for k in 0..N {
-            let (a0, a1, a2) = (
-                i128::from(values[0][k]),
-                i128::from(values[1][k]),
-                i128::from(values[2][k]),
-            );
-            let (da1, da2) = (a1 - a0, a2 - a0);
-            let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
-            planes.dx[k] = div_round(nx * scale, area) as i64;
-            planes.dy[k] = div_round(ny * scale, area) as i64;
-            let offset = div_round((nx * rx + ny * ry) * scale, area);
-            planes.base[k] = ((a0 + i128::from(bias)) * scale + offset) as i64;
+            let values = [values[0][k], values[1][k], values[2][k]];
+            let (base, dx, dy) = exact_plane(vertices, values, bias, reference, SETUP - STEP_BITS)?;
+            planes.base[k] = base;
+            planes.dx[k] = dx;
+            planes.dy[k] = dy;
         }
         planes.finish();
         Some(planes)
@@ -198,7 +179,43 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 }
 
-/// `numerator / denominator` rounded half up, for any signs.
+/// One plane of [`Planes::new_exact`]: value at `reference` and gradients, in units of
+/// 2^-(16 + `scale_bits`), by exact 128-bit arithmetic; `None` for degenerate triangles. Not
+/// generic, so that every plane count and precision shares one copy of the 128-bit code.
+#[inline(never)]
+fn exact_plane(
+    vertices: [Point; 3],
+    values: [i64; 3],
+    bias: i64,
+    reference: Point,
+    scale_bits: u32,
+) -> Option<(i64, i64, i64)> {
+    let [p0, p1, p2] = vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
+    let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
+    let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
+    // Deltas below 2^33, raw values below 2^34: every product below 2^100.
+    let area = ex1 * ey2 - ex2 * ey1;
+    if area == 0 {
+        return None;
+    }
+    let (rx, ry) = (
+        i128::from(reference.x) - p0.0,
+        i128::from(reference.y) - p0.1,
+    );
+    let scale = 1i128 << scale_bits;
+    let [a0, a1, a2] = values.map(i128::from);
+    let (da1, da2) = (a1 - a0, a2 - a0);
+    let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
+    let dx = div_round(nx * scale, area) as i64;
+    let dy = div_round(ny * scale, area) as i64;
+    let offset = div_round((nx * rx + ny * ry) * scale, area);
+    let base = ((a0 + i128::from(bias)) * scale + offset) as i64;
+    Some((base, dx, dy))
+}
+
+/// `numerator / denominator` rounded half up, for any signs. One copy: 128-bit division is long
+/// code on 32-bit cores.
+#[inline(never)]
 fn div_round(numerator: i128, denominator: i128) -> i128 {
     let (n, d) = if denominator < 0 {
         (-numerator, -denominator)

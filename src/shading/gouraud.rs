@@ -1,13 +1,19 @@
 //! Gouraud shading: colours interpolated between the vertices.
 
-use embedded_graphics::{geometry::Point, primitives::Rectangle};
+use core::marker::PhantomData;
+
+use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
 
 use super::{
-    paint::{drawable_style, PaintVisitor, ShaderPainter},
-    spans::PlanesShader,
+    paint::{drawable_style, PaintVisitor, Painter},
+    spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
-use crate::{coverage::FillRule, geometry::Triangle};
+use crate::{
+    coverage::{FillRule, Span},
+    geometry::Triangle,
+    interpolate::Planes,
+};
 
 /// Fills a triangle with colours interpolated between its vertices.
 ///
@@ -153,20 +159,83 @@ where
         let values = self
             .colors
             .map(|c| c.channels().map(|v| i64::from(v) << 16));
-        let origin = window.top_left;
+        // Rounded: half a level of bias turns truncation into rounding to nearest. Dithered:
+        // the threshold takes its place.
+        let bias = if self.dither { 0 } else { 1 << 15 };
+        let planes = Planes::new(triangle.vertices, values, bias, window.top_left)?;
+        Some(visitor.visit(GouraudPainter {
+            planes,
+            dither: self.dither,
+            color: PhantomData,
+        }))
+    }
+}
+
+/// The painter of a Gouraud triangle, dithered or not: one type, so the edge walk is built
+/// once per target; each run picks its span loop.
+struct GouraudPainter<C, const N: usize> {
+    planes: Planes<N>,
+    dither: bool,
+    color: PhantomData<C>,
+}
+
+impl<C, const N: usize> Painter for GouraudPainter<C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    type Color = C;
+
+    #[inline]
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
         if self.dither {
-            let dithered = |p: Point, v: [u32; N]| {
-                let threshold = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
-                C::from_channels(v.map(|c| (c.wrapping_add(threshold) >> 16) as u8))
-            };
-            let shader = PlanesShader::new(triangle, values, 0, origin, dithered)?;
-            Some(visitor.visit(ShaderPainter(shader)))
+            shade_span(
+                &GouraudShader::<C, N, true>(&self.planes, PhantomData),
+                run,
+                target,
+            )
         } else {
-            // Half a level of bias turns truncation into rounding to nearest.
-            let rounded = |_: Point, v: [u32; N]| C::from_channels(v.map(|c| (c >> 16) as u8));
-            let shader = PlanesShader::new(triangle, values, 1 << 15, origin, rounded)?;
-            Some(visitor.visit(ShaderPainter(shader)))
+            shade_span(
+                &GouraudShader::<C, N, false>(&self.planes, PhantomData),
+                run,
+                target,
+            )
         }
+    }
+}
+
+/// Colours along a span: channels stepped by additions, rounded to nearest or dithered.
+struct GouraudShader<'a, C, const N: usize, const DITHER: bool>(&'a Planes<N>, PhantomData<C>);
+
+impl<C, const N: usize, const DITHER: bool> PixelShader for GouraudShader<'_, C, N, DITHER>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    type Color = C;
+    /// Column, row, channel values and their steps: the steps are copied into the state so the
+    /// span loop keeps them in registers.
+    type State = (i32, i32, [u32; N], [u32; N]);
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        (x, y, self.0.at(x, y), self.0.step)
+    }
+
+    #[inline(always)]
+    fn next(&self, (x, y, values, step): &mut Self::State) -> C {
+        let threshold = if DITHER {
+            BAYER[(*y & 3) as usize][(*x & 3) as usize]
+        } else {
+            0
+        };
+        let color = C::from_channels(values.map(|c| (c.wrapping_add(threshold) >> 16) as u8));
+        *x = x.wrapping_add(1);
+        for k in 0..N {
+            values[k] = values[k].wrapping_add(step[k]);
+        }
+        color
     }
 }
 

@@ -10,7 +10,7 @@ use embedded_graphics::{draw_target::DrawTarget, pixelcolor::PixelColor, primiti
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
-    coverage::{walk_inlined, FillRule, Span, SpanSink},
+    coverage::{walk, FillRule, Span, SpanSink},
     geometry::Triangle,
 };
 
@@ -178,7 +178,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
             target: self.target,
             painter,
         };
-        walk_inlined(self.triangle, self.rule, &self.window, &mut sink)
+        walk(self.triangle, self.rule, &self.window, &mut sink)
     }
 }
 
@@ -195,10 +195,7 @@ where
 {
     type Error = D::Error;
 
-    // Painting is most of the code: kept out of the walk's row loops (of which there are
-    // several variants) when code size matters.
-    #[cfg_attr(feature = "small-code", inline(never))]
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    #[inline]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
         self.painter.paint(span, self.target)
     }

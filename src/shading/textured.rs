@@ -13,9 +13,7 @@ use crate::{
     coverage::{FillRule, Span},
     geometry::Triangle,
     interpolate::Planes,
-    texture::{
-        Axis, Clamped, Direct, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS,
-    },
+    texture::{Axis, Direct, Filter, TexelSource, Wrap, Wrapped, COORDINATE_BITS},
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
@@ -264,28 +262,11 @@ where
         visitor: V,
     ) -> Option<V::Output> {
         let coordinates = coordinate_planes(triangle, self, window)?;
-        let size = self.texture.size();
         let tint = match self.modulation {
             Some(colors) => Some(tint_planes(triangle, colors, window)?),
             None => None,
         };
-        Some(match self.wrap {
-            Wrap::Clamp => {
-                let axes = (Clamped::new(size.width), Clamped::new(size.height));
-                paint_with_axes(self, visitor, coordinates, axes, tint)
-            }
-            Wrap::Repeat => {
-                if let (Some(u), Some(v)) = (
-                    Pow2Repeated::new(size.width),
-                    Pow2Repeated::new(size.height),
-                ) {
-                    paint_with_axes(self, visitor, coordinates, (u, v), tint)
-                } else {
-                    let axes = (Repeated::new(size.width), Repeated::new(size.height));
-                    paint_with_axes(self, visitor, coordinates, axes, tint)
-                }
-            }
-        })
+        Some(visitor.visit(TexturedPainter::new(self, coordinates, tint)))
     }
 }
 
@@ -348,111 +329,97 @@ where
     Planes::new_in(triangle.vertices, values, 0, window)
 }
 
-/// Dispatches on filter and modulation, the choices that change the per-pixel work.
-#[inline(always)]
-fn paint_with_axes<T, A, V, const M: usize>(
-    style: &TextureStyle<T>,
-    visitor: V,
-    coordinates: Planes<2, COORDINATE_BITS>,
-    axes: (A, A),
-    tint: Option<Planes<M>>,
-) -> V::Output
-where
-    T: TexelSource + Copy,
-    T::Color: ChannelColor<Channels = [u8; M]>,
-    A: Axis,
-    V: PaintVisitor<T::Color>,
-{
-    let texture = style.texture;
-    match (style.filter, tint) {
-        (Filter::Nearest, None) => visitor.visit(TexturedPainter::<_, _, M, false, false>::new(
-            texture,
-            coordinates,
-            axes,
-            None,
-        )),
-        (Filter::Bilinear, None) => visitor.visit(TexturedPainter::<_, _, M, true, false>::new(
-            texture,
-            coordinates,
-            axes,
-            None,
-        )),
-        (Filter::Nearest, Some(tint)) => visitor.visit(
-            TexturedPainter::<_, _, M, false, true>::new(texture, coordinates, axes, Some(tint)),
-        ),
-        (Filter::Bilinear, Some(tint)) => visitor.visit(
-            TexturedPainter::<_, _, M, true, true>::new(texture, coordinates, axes, Some(tint)),
-        ),
-    }
-}
-
-/// The painter of a textured triangle: runs whose coordinates stay inside the texture (checked
+/// The painter of a textured triangle, one type for every filter, wrap and modulation: each run
+/// picks the span loop for its case. Runs whose coordinates stay inside the texture (checked
 /// at both ends; coordinates are linear along a row) are sampled with no wrapping or clamping,
 /// the others with the style's addressing.
-struct TexturedPainter<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
-    addressed: TexturedShader<T, A, M, BILINEAR, MODULATE>,
-    direct: TexturedShader<T, Direct, M, BILINEAR, MODULATE>,
+struct TexturedPainter<T, const M: usize> {
+    texture: T,
+    coordinates: Planes<2, COORDINATE_BITS>,
+    tint: Option<Planes<M>>,
+    bilinear: bool,
+    /// Addressing of runs that leave the texture, and the per-pixel steps in its terms.
+    axes: (Wrapped, Wrapped),
+    steps: (i64, i64),
     /// Coordinates (in 2^-46 texels) below these, and not negative, need no addressing.
     limits: [i64; 2],
 }
 
-impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool>
-    TexturedPainter<T, A, M, BILINEAR, MODULATE>
+impl<T, const M: usize> TexturedPainter<T, M>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
-    A: Axis,
 {
-    #[inline(always)]
+    #[inline]
     fn new(
-        texture: T,
+        style: &TextureStyle<T>,
         coordinates: Planes<2, COORDINATE_BITS>,
-        (u, v): (A, A),
         tint: Option<Planes<M>>,
     ) -> Self {
+        let texture = style.texture;
         let size = texture.size();
+        let bilinear = style.filter == Filter::Bilinear;
         // Bilinear also reads the texel to the right and below.
         let reach = |side: u32| {
-            let texels = if BILINEAR { side - 1 } else { side };
+            let texels = if bilinear { side - 1 } else { side };
             i64::from(texels) << COORDINATE_BITS
         };
-        let addressed = Sampler {
-            texture,
-            u,
-            v,
-            du: u.step(coordinates.dx[0]),
-            dv: v.step(coordinates.dx[1]),
-        };
-        let direct = Sampler {
-            texture,
-            u: Direct,
-            v: Direct,
-            du: coordinates.dx[0],
-            dv: coordinates.dx[1],
+        let axes = match style.wrap {
+            Wrap::Clamp => (Wrapped::clamp(size.width), Wrapped::clamp(size.height)),
+            Wrap::Repeat => (Wrapped::repeat(size.width), Wrapped::repeat(size.height)),
         };
         Self {
-            addressed: TexturedShader::new(addressed, coordinates, tint),
-            direct: TexturedShader::new(direct, coordinates, tint),
+            texture,
+            steps: (
+                axes.0.step(coordinates.dx[0]),
+                axes.1.step(coordinates.dx[1]),
+            ),
+            coordinates,
+            tint,
+            bilinear,
+            axes,
             limits: [reach(size.width), reach(size.height)],
         }
     }
-}
 
-impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> Painter
-    for TexturedPainter<T, A, M, BILINEAR, MODULATE>
-where
-    T: TexelSource + Copy,
-    T::Color: ChannelColor<Channels = [u8; M]>,
-    A: Axis,
-{
-    type Color = T::Color;
-
+    /// Shades `run` with the span loop of this filter and modulation, addressed by `axes`.
     #[inline(always)]
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn shade<A, D, const BILINEAR: bool, const MODULATE: bool>(
+        &self,
+        (u, v): (A, A),
+        (du, dv): (A::Coord, A::Coord),
+        run: Span,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        A: Axis,
+        D: DrawTarget<Color = T::Color>,
+    {
+        let shader = TexturedShader::<_, _, M, BILINEAR, MODULATE> {
+            sampler: Sampler {
+                texture: self.texture,
+                u,
+                v,
+                du,
+                dv,
+            },
+            coordinates: &self.coordinates,
+            tint: &self.tint,
+        };
+        shade_span(&shader, run, target)
+    }
+
+    /// Shades `run` inside the texture or addressed, as its ends say.
+    #[inline(always)]
+    fn shade_run<D, const BILINEAR: bool, const MODULATE: bool>(
+        &self,
+        run: Span,
+        target: &mut D,
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        let planes = &self.direct.coordinates;
+        let planes = &self.coordinates;
         let start = planes.at_exact(run.x, run.y);
         let steps = i64::from(run.len) - 1;
         let inside = (0..2).all(|k| {
@@ -465,9 +432,31 @@ where
             })
         });
         if inside {
-            shade_span(&self.direct, run, target)
+            let steps = (planes.dx[0], planes.dx[1]);
+            self.shade::<_, _, BILINEAR, MODULATE>((Direct, Direct), steps, run, target)
         } else {
-            shade_span(&self.addressed, run, target)
+            self.shade::<_, _, BILINEAR, MODULATE>(self.axes, self.steps, run, target)
+        }
+    }
+}
+
+impl<T, const M: usize> Painter for TexturedPainter<T, M>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+{
+    type Color = T::Color;
+
+    #[inline]
+    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        match (self.bilinear, self.tint.is_some()) {
+            (false, false) => self.shade_run::<_, false, false>(run, target),
+            (true, false) => self.shade_run::<_, true, false>(run, target),
+            (false, true) => self.shade_run::<_, false, true>(run, target),
+            (true, true) => self.shade_run::<_, true, true>(run, target),
         }
     }
 }
@@ -509,27 +498,10 @@ where
 }
 
 /// The per-pixel shader of a textured triangle.
-struct TexturedShader<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
+struct TexturedShader<'a, T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
     sampler: Sampler<T, A>,
-    coordinates: Planes<2, COORDINATE_BITS>,
-    tint: Option<Planes<M>>,
-}
-
-impl<T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool>
-    TexturedShader<T, A, M, BILINEAR, MODULATE>
-{
-    #[inline(always)]
-    fn new(
-        sampler: Sampler<T, A>,
-        coordinates: Planes<2, COORDINATE_BITS>,
-        tint: Option<Planes<M>>,
-    ) -> Self {
-        Self {
-            sampler,
-            coordinates,
-            tint,
-        }
-    }
+    coordinates: &'a Planes<2, COORDINATE_BITS>,
+    tint: &'a Option<Planes<M>>,
 }
 
 /// Where a span is: texture coordinates and modulation factors, with their steps.
@@ -543,7 +515,7 @@ struct TexturedState<T, A: Axis, const M: usize> {
 }
 
 impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> PixelShader
-    for TexturedShader<T, A, M, BILINEAR, MODULATE>
+    for TexturedShader<'_, T, A, M, BILINEAR, MODULATE>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
@@ -557,7 +529,7 @@ where
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
         let [u, v] = self.coordinates.at_exact(x, y);
-        let (tint, tint_step) = match (MODULATE, &self.tint) {
+        let (tint, tint_step) = match (MODULATE, self.tint) {
             (true, Some(planes)) => (planes.at(x, y), planes.step),
             _ => ([0; M], [0; M]),
         };

@@ -178,14 +178,22 @@ where
         let start = row * self.width;
         let end = (i64::from(x) + i64::from(len)).clamp(0, self.width as i64) as usize;
         let column = x.max(0) as usize;
-        if column < end {
-            fill_run(&mut self.pixels[start + column..start + end], value);
+        if let Some(run) = self.pixels.get_mut(start + column..start + end) {
+            fill_run(run, value);
         }
     }
 
-    /// `fill_contiguous` for areas of several rows or partly outside.
+    /// Hands `colors` to [`Self::fill_contiguous_clipped`]. By value and out of line: the
+    /// span loop's colour state is not pinned to memory by the type erasure.
     #[inline(never)]
-    fn fill_contiguous_clipped<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
+    fn fill_contiguous_outside<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
+        self.fill_contiguous_clipped(area, &mut colors);
+    }
+
+    /// `fill_contiguous` for areas of several rows or partly outside. Type-erased: the
+    /// rasterizer's spans never come here, so one copy per colour type serves every shader.
+    #[inline(never)]
+    fn fill_contiguous_clipped(&mut self, area: &Rectangle, colors: &mut dyn Iterator<Item = C>) {
         let Some(window) = self.clip(area) else {
             return;
         };
@@ -194,19 +202,19 @@ where
         let left = (window.x0 as i64 - i64::from(area.top_left.x)) as u64;
         let right = u64::from(area.size.width) - left - (window.x1 - window.x0) as u64;
         let above = (window.y0 as i64 - i64::from(area.top_left.y)) as u64;
-        skip(&mut colors, above * u64::from(area.size.width));
+        skip(colors, above * u64::from(area.size.width));
         for y in window.y0..window.y1 {
-            skip(&mut colors, left);
+            skip(colors, left);
             let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
             let mut written = 0;
-            for (dst, color) in row.iter_mut().zip(colors.by_ref()) {
+            for (dst, color) in row.iter_mut().zip(&mut *colors) {
                 *dst = S::store(color);
                 written += 1;
             }
             if written < row.len() {
                 break;
             }
-            skip(&mut colors, right);
+            skip(colors, right);
         }
     }
 
@@ -306,7 +314,7 @@ where
                 return Ok(());
             }
         }
-        self.fill_contiguous_clipped(area, colors.into_iter());
+        self.fill_contiguous_outside(area, colors.into_iter());
         Ok(())
     }
 
@@ -392,7 +400,7 @@ fn fill_long_run<S: Copy>(run: &mut [S], value: S) {
 
 /// Drops `count` items; stops early if the iterator ends.
 #[inline]
-fn skip<I: Iterator>(iter: &mut I, count: u64) {
+fn skip<I: Iterator + ?Sized>(iter: &mut I, count: u64) {
     if count > 0 {
         // `nth(n)` consumes n + 1 items.
         let mut remaining = count;
