@@ -13,9 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 a=${1:-2} b=${2:-4}
 command -v valgrind >/dev/null || { echo "needs valgrind (apt-get install valgrind)" >&2; exit 1; }
-cargo build --release -q --example perf
+cargo build --profile measure -q --example perf
 cargo build --release -q --manifest-path benches/peers/Cargo.toml
-ours=target/release/examples/perf
+ours=target/measure/examples/perf
 peers=benches/peers/target/release/trirast-peers
 
 instructions() { valgrind --tool=callgrind --callgrind-out-file=/dev/null "$@" 2>&1 | awk '/Collected/ {print $4}'; }

@@ -10,8 +10,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=$1 scene=$2 a=${3:-5} b=${4:-10}
 command -v valgrind >/dev/null || { echo "needs valgrind (apt-get install valgrind)" >&2; exit 1; }
-cargo build --release -q --example perf
-bin=target/release/examples/perf
+cargo build --profile measure -q --example perf
+bin=target/measure/examples/perf
 instructions() { valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bin" "$mode" "$scene" "$1" 2>&1 | awk '/Collected/ {print $4}'; }
 last_line() { "$bin" "$mode" "$scene" "$1" | tail -n 1; }
 field() { sed -n "s/.*$1=\([0-9]*\).*/\1/p"; }

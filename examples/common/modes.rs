@@ -159,7 +159,9 @@ pub struct Workspace<'a, const N: usize> {
     pub list: &'a mut BandScene<'static, Rgb565, N>,
 }
 
-/// Draws `triangles` in `mode` into `frame` (320 x 240).
+/// Draws `triangles` in `mode` into `frame` (320 x 240). Out of line, so that what is measured
+/// is compiled as a caller of the library would be, whatever else the program holds.
+#[inline(never)]
 pub fn draw<const N: usize>(
     mode: Mode,
     triangles: &[SceneTriangle],

@@ -6,7 +6,7 @@
 //! remainder of that division as an error term; each row adds the quotient and remainder of
 //! `dx / dy`, computed once.
 
-use crate::setup::Lane;
+use crate::setup::{lane::div_rem_u64, Lane};
 
 /// How an edge's exact crossing `X` on a row becomes a pixel bound.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -78,16 +78,6 @@ fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_i
     (T::from_i64(x), T::from_i64(rem as i64 - dy))
 }
 
-/// `u64` division that stays in 32 bits when it can: on Cortex-M0 a 64-bit division is a long
-/// library call, a 32-bit one a short one.
-#[inline(always)]
-fn div_rem_u64(numerator: u64, divisor: u64) -> (u64, u64) {
-    match (u32::try_from(numerator), u32::try_from(divisor)) {
-        (Ok(n), Ok(d)) => (u64::from(n / d), u64::from(n % d)),
-        _ => (numerator / divisor, numerator % divisor),
-    }
-}
-
 /// An edge being walked one row at a time: bound, error term and increments.
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct EdgeStepper<T> {
@@ -151,7 +141,7 @@ pub(crate) struct ExactEdge<T> {
 
 impl<T: Lane> ExactEdge<T> {
     /// The edge from `upper` to `lower` (`upper.1 < lower.1`).
-    #[inline]
+    #[inline(never)]
     pub(crate) fn new(upper: (T, T), lower: (T, T), rounding: Rounding) -> Self {
         let dy = lower.1 - upper.1;
         Self {
@@ -164,7 +154,7 @@ impl<T: Lane> ExactEdge<T> {
     }
 
     /// The bound on `row`, in `upper.1..=lower.1`.
-    #[inline]
+    #[inline(never)]
     pub(crate) fn at(&self, row: T) -> T {
         bound_at(
             self.xa,

@@ -236,8 +236,7 @@ struct RowPlan<T> {
 impl<T: Lane> RowPlan<T> {
     /// `None` when nothing of the triangle is inside the window (or it is degenerate).
     #[inline(always)]
-    fn new(sorted: [Point; 3], rule: FillRule, clip: &Rectangle) -> Option<Self> {
-        let clip = Clip::<T>::from_rectangle(clip)?;
+    fn new(sorted: [Point; 3], rule: FillRule, clip: Clip<T>) -> Option<Self> {
         let triangle = Prepared::<T>::from_sorted(sorted)?;
         let [top, middle, bottom] = triangle.sorted;
         // Top-left: rows top..bottom (the bottom vertex row is an apex or a bottom edge, both
@@ -304,7 +303,8 @@ fn walk_fast<K: SpanSink + ?Sized>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let Some(plan) = RowPlan::<i32>::new(sorted, rule, clip) else {
+    let Some(plan) = Clip::fast(clip).and_then(|clip| RowPlan::<i32>::new(sorted, rule, clip))
+    else {
         return Ok(());
     };
     let [top, middle, bottom] = plan.triangle.sorted;
@@ -332,25 +332,35 @@ fn walk_fast<K: SpanSink + ?Sized>(
     } else {
         (short, long)
     };
+    // Rows run in at most two stretches, above and below the middle vertex, so each row
+    // tests one bound only.
+    let mut stop = if row < plan.switch {
+        plan.switch.min(plan.end)
+    } else {
+        plan.end
+    };
     loop {
-        plan.emit(left.x(), right.x(), row, sink)?;
-        row += 1;
+        loop {
+            plan.emit(left.x(), right.x(), row, sink)?;
+            row += 1;
+            if row == stop {
+                break;
+            }
+            left.advance();
+            right.advance();
+        }
         if row == plan.end {
             return Ok(());
         }
-        if row == plan.switch {
-            // The short edge turns at the middle vertex, where it starts without a division.
-            let lower = EdgeStepper::start(middle, bottom, plan.short_rounding, row);
-            if long_left {
-                left.advance();
-                right = lower;
-            } else {
-                right.advance();
-                left = lower;
-            }
-        } else {
+        // The short edge turns at the middle vertex, where it starts without a division.
+        stop = plan.end;
+        let lower = EdgeStepper::start(middle, bottom, plan.short_rounding, row);
+        if long_left {
             left.advance();
+            right = lower;
+        } else {
             right.advance();
+            left = lower;
         }
     }
 }
@@ -374,7 +384,9 @@ fn walk_wide<E>(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    let Some(plan) = RowPlan::<i64>::new(sorted, rule, &clip) else {
+    let Some(plan) =
+        Clip::from_rectangle(&clip).and_then(|clip| RowPlan::<i64>::new(sorted, rule, clip))
+    else {
         return Ok(());
     };
     let [top, middle, bottom] = plan.triangle.sorted;

@@ -155,7 +155,16 @@ impl Lane for i64 {
 
     #[inline(always)]
     fn div_rem_floor(self, divisor: Self) -> (Self, Self) {
-        floor_div_rem!(self, divisor)
+        // Wide path only (vertices beyond the fast range): the compact division, on magnitudes.
+        let divisor = divisor.max(1).unsigned_abs();
+        let (q, r) = div_rem_u64(self.unsigned_abs(), divisor);
+        if self >= 0 {
+            (q as i64, r as i64)
+        } else if r == 0 {
+            (-(q as i64), 0)
+        } else {
+            (-(q as i64) - 1, (divisor - r) as i64)
+        }
     }
 
     #[inline]
@@ -184,6 +193,34 @@ impl Lane for i64 {
     }
 }
 
+/// `(n / d, n % d)` for `d > 0`, in 32 bits when both fit (on Cortex-M0 a short library call),
+/// else by shift and subtract: slow, but a few dozen instructions of flash instead of the ~1 KB
+/// 64-bit division routine. Only rare paths divide in 64 bits: edges starting far above the
+/// window and vertices beyond the fast range.
+#[inline]
+pub(crate) fn div_rem_u64(n: u64, d: u64) -> (u64, u64) {
+    if let (Ok(n), Ok(d)) = (u32::try_from(n), u32::try_from(d)) {
+        let d = d.max(1);
+        return (u64::from(n / d), u64::from(n % d));
+    }
+    div_rem_u64_bitwise(n, d.max(1))
+}
+
+/// [`div_rem_u64`]'s shift and subtract, out of line: one copy for every caller.
+#[inline(never)]
+fn div_rem_u64_bitwise(n: u64, d: u64) -> (u64, u64) {
+    let (mut q, mut r) = (0, 0u64);
+    for bit in (0..u64::BITS - n.leading_zeros()).rev() {
+        // r < d <= 2^63 before the shift: no bit is lost.
+        r = (r << 1) | ((n >> bit) & 1);
+        if r >= d {
+            r -= d;
+            q |= 1 << bit;
+        }
+    }
+    (q, r)
+}
+
 /// True when all `values` can take the 32-bit fast path (lie in `-2^30..2^30`).
 #[inline(always)]
 pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
@@ -191,4 +228,47 @@ pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
         .iter()
         .fold(0, |acc, &v| acc | v.wrapping_add(FAST_BIAS))
         >= 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn compact_division_agrees_with_the_builtin() {
+        let values = [
+            0u64,
+            1,
+            2,
+            7,
+            1 << 31,
+            u64::from(u32::MAX),
+            1 << 32,
+            (1 << 62) + 12_345,
+            u64::MAX - 1,
+            u64::MAX,
+        ];
+        for &n in &values {
+            for &d in &values[1..] {
+                assert_eq!(div_rem_u64(n, d), (n / d, n % d), "{n} / {d}");
+            }
+        }
+        for v in [
+            -7i64,
+            -6,
+            -1,
+            0,
+            5,
+            i64::from(i32::MIN) * 4 - 3,
+            i64::from(i32::MAX) * 4 + 1,
+        ] {
+            for d in [1i64, 2, 3, 7, 1 << 32, (1 << 33) - 1] {
+                assert_eq!(
+                    v.div_rem_floor(d),
+                    (v.div_euclid(d), v.rem_euclid(d)),
+                    "{v} / {d}"
+                );
+            }
+        }
+    }
 }

@@ -101,6 +101,19 @@ impl<T: Lane> Clip<T> {
     }
 }
 
+impl Clip<i32> {
+    /// The window of a rectangle for the fast lane, or `None` when it holds no pixel: plain
+    /// 32-bit arithmetic, ends saturated at `i32::MAX`. No clamping to the lane is needed:
+    /// fast-lane edges lie within ±2^30 + 1, so a bound beyond only ever loses a `max`/`min`.
+    #[inline(always)]
+    pub(crate) fn fast(area: &Rectangle) -> Option<Self> {
+        let end = |start: i32, len: u32| start.saturating_add(len.min(i32::MAX as u32) as i32);
+        let (x0, y0) = (area.top_left.x, area.top_left.y);
+        let (x1, y1) = (end(x0, area.size.width), end(y0, area.size.height));
+        (x0 < x1 && y0 < y1).then_some(Self { x0, x1, y0, y1 })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -195,7 +195,8 @@ where
 {
     type Error = D::Error;
 
-    #[inline]
+    // A forwarder: the painter decides what is inlined into the row loop (a flat fill is).
+    #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
         self.painter.paint(span, self.target)
     }

@@ -384,7 +384,7 @@ where
 
     /// Shades `run` with the span loop of this filter and modulation, addressed by `axes`.
     #[inline(always)]
-    fn shade<A, D, const BILINEAR: bool, const MODULATE: bool>(
+    fn shade<A, D, const FILTER: u8, const TINT: u8>(
         &self,
         (u, v): (A, A),
         (du, dv): (A::Coord, A::Coord),
@@ -395,7 +395,7 @@ where
         A: Axis,
         D: DrawTarget<Color = T::Color>,
     {
-        let shader = TexturedShader::<_, _, M, BILINEAR, MODULATE> {
+        let shader = TexturedShader::<_, _, M, FILTER, TINT> {
             sampler: Sampler {
                 texture: self.texture,
                 u,
@@ -405,24 +405,19 @@ where
             },
             coordinates: &self.coordinates,
             tint: &self.tint,
+            bilinear: self.bilinear,
         };
         shade_span(&shader, run, target)
     }
 
-    /// Shades `run` inside the texture or addressed, as its ends say.
+    /// True when `run`'s coordinates stay inside the texture at both ends (so everywhere
+    /// between: they are linear along a row).
     #[inline(always)]
-    fn shade_run<D, const BILINEAR: bool, const MODULATE: bool>(
-        &self,
-        run: Span,
-        target: &mut D,
-    ) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = T::Color>,
-    {
+    fn inside(&self, run: Span) -> bool {
         let planes = &self.coordinates;
         let start = planes.at_exact(run.x, run.y);
         let steps = i64::from(run.len) - 1;
-        let inside = (0..2).all(|k| {
+        (0..2).all(|k| {
             let end = steps
                 .checked_mul(planes.dx[k])
                 .and_then(|d| d.checked_add(start[k]));
@@ -430,13 +425,36 @@ where
                 let limit = 0..self.limits[k];
                 limit.contains(&start[k]) && limit.contains(&end)
             })
-        });
-        if inside {
-            let steps = (planes.dx[0], planes.dx[1]);
-            self.shade::<_, _, BILINEAR, MODULATE>((Direct, Direct), steps, run, target)
+        })
+    }
+
+    /// Shades `run` with this filter's and modulation's loop when it stays inside the texture
+    /// (no addressing), else with the addressed loop.
+    #[inline(always)]
+    fn shade_direct<D, const FILTER: u8, const TINT: u8>(
+        &self,
+        run: Span,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        if self.inside(run) {
+            let steps = (self.coordinates.dx[0], self.coordinates.dx[1]);
+            self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, run, target)
         } else {
-            self.shade::<_, _, BILINEAR, MODULATE>(self.axes, self.steps, run, target)
+            self.shade_addressed(run, target)
         }
+    }
+
+    /// Shades a run that leaves the texture: one loop for every filter and modulation, which
+    /// it reads per pixel. Out of line, and rare enough that the flash matters more.
+    #[inline(never)]
+    fn shade_addressed<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        self.shade::<_, _, EITHER, EITHER>(self.axes, self.steps, run, target)
     }
 }
 
@@ -447,17 +465,34 @@ where
 {
     type Color = T::Color;
 
+    // Out of line: one copy per target serves the plain and the depth-tested walk.
     #[inline]
     fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
         match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.shade_run::<_, false, false>(run, target),
-            (true, false) => self.shade_run::<_, true, false>(run, target),
-            (false, true) => self.shade_run::<_, false, true>(run, target),
-            (true, true) => self.shade_run::<_, true, true>(run, target),
+            (false, false) => self.shade_direct::<_, NO, NO>(run, target),
+            (true, false) => self.shade_direct::<_, YES, NO>(run, target),
+            (false, true) => self.shade_direct::<_, NO, YES>(run, target),
+            (true, true) => self.shade_direct::<_, YES, YES>(run, target),
         }
+    }
+}
+
+/// A span loop's filter (bilinear or not) and modulation: fixed for the loop, or read per
+/// pixel (`EITHER`, for loops that serve every case).
+const NO: u8 = 0;
+const YES: u8 = 1;
+const EITHER: u8 = 2;
+
+/// Whether `choice` holds, given what the style chose at run time.
+#[inline(always)]
+const fn holds(choice: u8, chosen: bool) -> bool {
+    match choice {
+        NO => false,
+        YES => true,
+        _ => chosen,
     }
 }
 
@@ -498,10 +533,12 @@ where
 }
 
 /// The per-pixel shader of a textured triangle.
-struct TexturedShader<'a, T, A: Axis, const M: usize, const BILINEAR: bool, const MODULATE: bool> {
+struct TexturedShader<'a, T, A: Axis, const M: usize, const FILTER: u8, const TINT: u8> {
     sampler: Sampler<T, A>,
     coordinates: &'a Planes<2, COORDINATE_BITS>,
     tint: &'a Option<Planes<M>>,
+    /// The style's filter, for loops whose `FILTER` is `EITHER`.
+    bilinear: bool,
 }
 
 /// Where a span is: texture coordinates and modulation factors, with their steps.
@@ -514,8 +551,8 @@ struct TexturedState<T, A: Axis, const M: usize> {
     tint_step: [u32; M],
 }
 
-impl<T, A, const M: usize, const BILINEAR: bool, const MODULATE: bool> PixelShader
-    for TexturedShader<'_, T, A, M, BILINEAR, MODULATE>
+impl<T, A, const M: usize, const FILTER: u8, const TINT: u8> PixelShader
+    for TexturedShader<'_, T, A, M, FILTER, TINT>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
@@ -524,12 +561,12 @@ where
     type Color = T::Color;
     type State = TexturedState<T, A, M>;
 
-    const BUFFERED: bool = BILINEAR;
+    const BUFFERED: bool = FILTER != NO;
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
         let [u, v] = self.coordinates.at_exact(x, y);
-        let (tint, tint_step) = match (MODULATE, self.tint) {
+        let (tint, tint_step) = match (TINT != NO, self.tint) {
             (true, Some(planes)) => (planes.at(x, y), planes.step),
             _ => ([0; M], [0; M]),
         };
@@ -545,14 +582,14 @@ where
     #[inline(always)]
     fn next(&self, state: &mut Self::State) -> T::Color {
         let sampler = &state.sampler;
-        let texel = if BILINEAR {
+        let texel = if holds(FILTER, self.bilinear) {
             sampler.bilinear(state.u, state.v)
         } else {
             sampler.nearest(state.u, state.v)
         };
         state.u = sampler.u.advance(state.u, sampler.du);
         state.v = sampler.v.advance(state.v, sampler.dv);
-        if MODULATE {
+        if holds(TINT, self.tint.is_some()) {
             let factors = state.tint;
             for k in 0..M {
                 state.tint[k] = state.tint[k].wrapping_add(state.tint_step[k]);

@@ -183,11 +183,33 @@ where
         }
     }
 
-    /// Hands `colors` to [`Self::fill_contiguous_clipped`]. By value and out of line: the
-    /// span loop's colour state is not pinned to memory by the type erasure.
+    /// `fill_contiguous` for areas of several rows (a band copied to the screen, say) or partly
+    /// outside. Out of line, taking `colors` by value: the span loop's colour state is not
+    /// pinned to memory. Areas inside the image are copied row by row; the rest goes to
+    /// [`Self::fill_contiguous_clipped`], type-erased.
     #[inline(never)]
-    fn fill_contiguous_outside<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
-        self.fill_contiguous_clipped(area, &mut colors);
+    fn fill_contiguous_rows<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
+        match self.clip(area) {
+            Some(window)
+                if window.x0 as i64 == i64::from(area.top_left.x)
+                    && window.y0 as i64 == i64::from(area.top_left.y)
+                    && (window.x1 - window.x0) as u64 == u64::from(area.size.width)
+                    && (window.y1 - window.y0) as u64 == u64::from(area.size.height) =>
+            {
+                for y in window.y0..window.y1 {
+                    let start = y * self.width;
+                    let Some(row) = self.pixels.get_mut(start + window.x0..start + window.x1)
+                    else {
+                        return;
+                    };
+                    for dst in row {
+                        let Some(color) = colors.next() else { return };
+                        *dst = S::store(color);
+                    }
+                }
+            }
+            _ => self.fill_contiguous_clipped(area, &mut colors),
+        }
     }
 
     /// `fill_contiguous` for areas of several rows or partly outside. Type-erased: the
@@ -314,7 +336,7 @@ where
                 return Ok(());
             }
         }
-        self.fill_contiguous_outside(area, colors.into_iter());
+        self.fill_contiguous_rows(area, colors.into_iter());
         Ok(())
     }
 
@@ -383,6 +405,12 @@ fn fill_run<S: Copy>(run: &mut [S], value: S) {
 #[inline(never)]
 fn fill_long_run<S: Copy>(run: &mut [S], value: S) {
     let n = run.len();
+    if n <= 32 {
+        // Never taken (`fill_run` sends only longer runs), but it proves every index below in
+        // bounds: no panic code in the flash.
+        run.fill(value);
+        return;
+    }
     let block = [value; 16];
     // 32 elements a step and the ragged end as one more, overlapping, 32: runs up to 64
     // need no loop iteration.
