@@ -216,6 +216,19 @@ pub fn walk<K: SpanSink + ?Sized>(
     }
 }
 
+/// [`walk`] for a sink behind `dyn`: one copy of the row loop per error type, shared by every
+/// style and target of the depth-tested pass, whose span work is a long call anyway, instead
+/// of one copy each.
+#[inline(never)]
+pub(crate) fn walk_erased<E>(
+    triangle: &Triangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut dyn SpanSink<Error = E>,
+) -> Result<(), E> {
+    walk(triangle, rule, clip, sink)
+}
+
 /// The rows a triangle covers inside a window, and how its edges round there: what the fast
 /// and the wide walk share.
 struct RowPlan<T> {

@@ -5,7 +5,7 @@ use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
 
 use super::{DepthBuffer, DepthTest};
 use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
+    coverage::{walk_erased, FillRule, Span, SpanSink},
     geometry::Triangle,
     interpolate::Planes,
     shading::paint::{PaintVisitor, Painter},
@@ -48,7 +48,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
             slack,
             write: self.write,
         };
-        walk(self.triangle, self.rule, &self.window, &mut sink)
+        walk_erased(self.triangle, self.rule, &self.window, &mut sink)
     }
 }
 
