@@ -159,75 +159,100 @@ pub struct Workspace<'a, const N: usize> {
     pub list: &'a mut BandScene<'static, Rgb565, N>,
 }
 
-/// Draws `triangles` in `mode` into `frame` (320 x 240). Out of line, so that what is measured
-/// is compiled as a caller of the library would be, whatever else the program holds.
-#[inline(never)]
+/// Draws `triangles` in `mode` into `frame` (320 x 240). Each mode is a function of its own,
+/// out of line, so that what is measured is compiled as a caller of the library would compile
+/// it, whatever else the program holds.
 pub fn draw<const N: usize>(
     mode: Mode,
     triangles: &[SceneTriangle],
     frame: &mut Framebuffer<'_, Rgb565>,
     work: &mut Workspace<'_, N>,
 ) {
-    let count = triangles.len();
     match mode {
-        Mode::Flat => {
-            for t in triangles {
-                let [a, b, c] = t.vertices;
-                let _ = Triangle::new(a, b, c)
-                    .into_styled(FlatStyle::new(t.color))
-                    .draw(frame);
-            }
-        }
-        Mode::Gouraud => {
-            for t in triangles {
-                let [a, b, c] = t.vertices;
-                let _ = Triangle::new(a, b, c)
-                    .into_styled(GouraudStyle::new(t.vertex_colors))
-                    .draw(frame);
-            }
-        }
-        Mode::GouraudZ => {
-            work.depths.fill(u16::MAX);
-            let Ok(mut zbuffer) = DepthBuffer::new(work.depths, WIDTH, HEIGHT) else {
-                return;
-            };
-            let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
-                return;
-            };
-            for (k, t) in triangles.iter().enumerate() {
-                let [a, b, c] = t.vertices;
-                let style = GouraudStyle::new(t.vertex_colors);
-                let _ = layered.draw(&Triangle::new(a, b, c), layered_depths(k, count), &style);
-            }
-        }
-        Mode::TexNearest | Mode::TexBilinear => {
-            let filter = if mode == Mode::TexNearest {
-                Filter::Nearest
-            } else {
-                Filter::Bilinear
-            };
-            for t in triangles {
-                let [a, b, c] = t.vertices;
-                let style = TextureStyle::new(work.texture, stretched_coordinates(t.vertices))
-                    .with_filter(filter);
-                let _ = Triangle::new(a, b, c).into_styled(style).draw(frame);
-            }
-        }
-        Mode::Band => {
-            let list = &mut *work.list;
-            list.clear();
-            for (k, t) in triangles.iter().enumerate() {
-                let [a, b, c] = t.vertices;
-                let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
-                let _ =
-                    list.push_with_depth(Triangle::new(a, b, c), layered_depths(k, count), style);
-            }
-            let bands = Bands::new(work.band, WIDTH, BAND_ROWS)
-                .and_then(|bands| bands.with_depth(work.depth_band));
-            if let Ok(mut bands) = bands {
-                let _ = bands.render(list, Rgb565::BLACK, frame);
-            }
-        }
+        Mode::Flat => draw_flat(triangles, frame),
+        Mode::Gouraud => draw_gouraud(triangles, frame),
+        Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths),
+        Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest),
+        Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear),
+        Mode::Band => draw_bands(triangles, frame, work),
+    }
+}
+
+#[inline(never)]
+fn draw_flat(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = Triangle::new(a, b, c)
+            .into_styled(FlatStyle::new(t.color))
+            .draw(frame);
+    }
+}
+
+#[inline(never)]
+fn draw_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = Triangle::new(a, b, c)
+            .into_styled(GouraudStyle::new(t.vertex_colors))
+            .draw(frame);
+    }
+}
+
+#[inline(never)]
+fn draw_gouraud_z(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    depths: &mut [u16],
+) {
+    let count = triangles.len();
+    depths.fill(u16::MAX);
+    let Ok(mut zbuffer) = DepthBuffer::new(depths, WIDTH, HEIGHT) else {
+        return;
+    };
+    let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
+        return;
+    };
+    for (k, t) in triangles.iter().enumerate() {
+        let [a, b, c] = t.vertices;
+        let style = GouraudStyle::new(t.vertex_colors);
+        let _ = layered.draw(&Triangle::new(a, b, c), layered_depths(k, count), &style);
+    }
+}
+
+/// The texture stretched over each triangle's bounding box.
+#[inline(never)]
+fn draw_textured(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    texture: Texels<'_, Rgb565>,
+    filter: Filter,
+) {
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let style =
+            TextureStyle::new(texture, stretched_coordinates(t.vertices)).with_filter(filter);
+        let _ = Triangle::new(a, b, c).into_styled(style).draw(frame);
+    }
+}
+
+#[inline(never)]
+fn draw_bands<const N: usize>(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    work: &mut Workspace<'_, N>,
+) {
+    let count = triangles.len();
+    let list = &mut *work.list;
+    list.clear();
+    for (k, t) in triangles.iter().enumerate() {
+        let [a, b, c] = t.vertices;
+        let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
+        let _ = list.push_with_depth(Triangle::new(a, b, c), layered_depths(k, count), style);
+    }
+    let bands =
+        Bands::new(work.band, WIDTH, BAND_ROWS).and_then(|bands| bands.with_depth(work.depth_band));
+    if let Ok(mut bands) = bands {
+        let _ = bands.render(list, Rgb565::BLACK, frame);
     }
 }
 

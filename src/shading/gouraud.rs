@@ -185,17 +185,15 @@ where
 {
     type Color = C;
 
-    #[inline]
+    // The plain loop inline in the row loop (measured: a call per span costs Cortex-M0 1.1
+    // instructions per pixel on large triangles); the dithered one out of line.
+    #[inline(always)]
     fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
         if self.dither {
-            shade_span(
-                &GouraudShader::<C, N, true>(&self.planes, PhantomData),
-                run,
-                target,
-            )
+            self.paint_dithered(run, target)
         } else {
             shade_span(
                 &GouraudShader::<C, N, false>(&self.planes, PhantomData),
@@ -203,6 +201,23 @@ where
                 target,
             )
         }
+    }
+}
+
+impl<C, const N: usize> GouraudPainter<C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    #[inline(never)]
+    fn paint_dithered<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        shade_span(
+            &GouraudShader::<C, N, true>(&self.planes, PhantomData),
+            run,
+            target,
+        )
     }
 }
 

