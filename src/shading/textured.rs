@@ -13,7 +13,9 @@ use crate::{
     coverage::{FillRule, Span},
     geometry::Triangle,
     interpolate::Planes,
-    texture::{Axis, Direct, Filter, TexelSource, Wrap, Wrapped, COORDINATE_BITS},
+    texture::{
+        Axis, Clamped, Direct, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS,
+    },
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
@@ -338,9 +340,8 @@ struct TexturedPainter<T, const M: usize> {
     coordinates: Planes<2, COORDINATE_BITS>,
     tint: Option<Planes<M>>,
     bilinear: bool,
-    /// Addressing of runs that leave the texture, and the per-pixel steps in its terms.
-    axes: (Wrapped, Wrapped),
-    steps: (i64, i64),
+    /// How runs that leave the texture are addressed.
+    addressing: Addressing,
     /// Coordinates (in 2^-46 texels) below these, and not negative, need no addressing.
     limits: [i64; 2],
 }
@@ -364,20 +365,24 @@ where
             let texels = if bilinear { side - 1 } else { side };
             i64::from(texels) << COORDINATE_BITS
         };
-        let axes = match style.wrap {
-            Wrap::Clamp => (Wrapped::clamp(size.width), Wrapped::clamp(size.height)),
-            Wrap::Repeat => (Wrapped::repeat(size.width), Wrapped::repeat(size.height)),
+        let addressing = match style.wrap {
+            Wrap::Clamp => Addressing::Clamp(Clamped::new(size.width), Clamped::new(size.height)),
+            Wrap::Repeat => {
+                let pow2 = Pow2Repeated::new(size.width).zip(Pow2Repeated::new(size.height));
+                if let Some((u, v)) = pow2 {
+                    Addressing::Pow2(u, v, u.step(coordinates.dx[0]), v.step(coordinates.dx[1]))
+                } else {
+                    let (u, v) = (Repeated::new(size.width), Repeated::new(size.height));
+                    Addressing::Repeat(u, v, u.step(coordinates.dx[0]), v.step(coordinates.dx[1]))
+                }
+            }
         };
         Self {
             texture,
-            steps: (
-                axes.0.step(coordinates.dx[0]),
-                axes.1.step(coordinates.dx[1]),
-            ),
             coordinates,
             tint,
             bilinear,
-            axes,
+            addressing,
             limits: [reach(size.width), reach(size.height)],
         }
     }
@@ -447,15 +452,47 @@ where
         }
     }
 
-    /// Shades a run that leaves the texture: one loop for every filter and modulation, which
-    /// it reads per pixel. Out of line, and rare enough that the flash matters more.
+    /// Shades a run that leaves the texture: a loop per wrap mode and filter, each serving
+    /// both modulations, which it reads per pixel. Out of line: rarer than runs inside (but
+    /// most runs of a tiled texture), and flash matters more.
     #[inline(never)]
     fn shade_addressed<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        self.shade::<_, _, EITHER, EITHER>(self.axes, self.steps, run, target)
+        let steps = (self.coordinates.dx[0], self.coordinates.dx[1]);
+        match (self.addressing, self.bilinear) {
+            (Addressing::Clamp(u, v), false) => {
+                self.shade::<_, _, NO, EITHER>((u, v), steps, run, target)
+            }
+            (Addressing::Clamp(u, v), true) => {
+                self.shade::<_, _, YES, EITHER>((u, v), steps, run, target)
+            }
+            (Addressing::Pow2(u, v, du, dv), false) => {
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), run, target)
+            }
+            (Addressing::Pow2(u, v, du, dv), true) => {
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), run, target)
+            }
+            (Addressing::Repeat(u, v, du, dv), false) => {
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), run, target)
+            }
+            (Addressing::Repeat(u, v, du, dv), true) => {
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), run, target)
+            }
+        }
     }
+}
+
+/// How a textured triangle addresses runs that leave the texture, with the per-pixel steps in
+/// the addressing's terms (computed once per triangle).
+#[derive(Copy, Clone, Debug)]
+enum Addressing {
+    Clamp(Clamped, Clamped),
+    /// Repeat, both sides powers of two.
+    Pow2(Pow2Repeated, Pow2Repeated, u64, u64),
+    /// Repeat, any sides.
+    Repeat(Repeated, Repeated, i64, i64),
 }
 
 impl<T, const M: usize> Painter for TexturedPainter<T, M>

@@ -68,60 +68,83 @@ impl Axis for Direct {
     }
 }
 
-/// Addressing of coordinates that may leave the texture, by the style's [`Wrap`]: chosen per
-/// triangle, at run time, so that one span loop serves every wrap mode. Only spans that leave
-/// the texture take it (see [`Direct`]), so its per-pixel `match` is off the common path.
-///
-/// [`Wrap`]: super::Wrap
+/// Repeat addressing of a power-of-two side: the coordinate is kept as a `u64` with its
+/// integer part (modulo 2^16) in the top 16 bits, so wrapping is free and extracting the texel
+/// is a constant shift and a mask.
 #[derive(Copy, Clone, Debug)]
-pub(crate) enum Wrapped {
-    /// Clamp to edge: texel indices are clamped to `0..=last`.
-    Clamp { last: i64 },
-    /// Repeat of a power-of-two side (2 to 2^15): the low bits of the integer part.
-    Pow2 { mask: u32 },
-    /// Repeat of any side: the coordinate is kept reduced modulo the side, and the step too,
-    /// so moving on needs at most one subtraction. Reducing costs a division, once per span.
-    Repeat {
-        size: u32,
-        /// The side in 2^-46 texels.
-        period: i64,
-    },
+pub(crate) struct Pow2Repeated {
+    mask: u32,
 }
 
-impl Wrapped {
-    /// Clamp-to-edge addressing for a side of `size` texels (at least 1).
+impl Pow2Repeated {
+    /// Addressing for a side of `size` texels, if it is a power of two from 2 to 2^15.
     #[inline]
-    pub(crate) fn clamp(size: u32) -> Self {
-        Self::Clamp {
-            last: i64::from(size.max(1) - 1),
-        }
+    pub(crate) fn new(size: u32) -> Option<Self> {
+        (size.is_power_of_two() && (2..=1 << 15).contains(&size)).then_some(Self { mask: size - 1 })
+    }
+}
+
+impl Axis for Pow2Repeated {
+    type Coord = u64;
+
+    #[inline(always)]
+    fn coord(self, value: i64) -> u64 {
+        // Shifting out the integer bits above 16 is a modulo by a multiple of the side.
+        (value as u64) << (64 - 16 - COORDINATE_BITS)
     }
 
-    /// Repeat addressing for a side of `size` texels (1 to 2^15): masking for powers of two.
+    #[inline(always)]
+    fn step(self, gradient: i64) -> u64 {
+        self.coord(gradient)
+    }
+
+    #[inline(always)]
+    fn advance(self, coord: u64, step: u64) -> u64 {
+        coord.wrapping_add(step)
+    }
+
+    #[inline(always)]
+    fn nearest(self, coord: u64) -> u32 {
+        (coord >> 48) as u32 & self.mask
+    }
+
+    #[inline(always)]
+    fn linear(self, coord: u64) -> (u32, u32, u32) {
+        let texel = (coord >> 48) as u32;
+        let fraction = (coord >> 32) as u32 & 0xFFFF;
+        (texel & self.mask, (texel + 1) & self.mask, fraction)
+    }
+}
+
+/// Repeat addressing of any side: the coordinate is kept reduced modulo the side, and the
+/// step too, so moving on needs at most one subtraction. Reducing costs a division, once per
+/// span.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Repeated {
+    size: u32,
+    /// The side in 2^-46 texels.
+    period: i64,
+}
+
+impl Repeated {
+    /// Addressing for a side of `size` texels, 1 to 2^15.
     #[inline]
-    pub(crate) fn repeat(size: u32) -> Self {
+    pub(crate) fn new(size: u32) -> Self {
         let size = size.clamp(1, 1 << 15);
-        if size.is_power_of_two() && size >= 2 {
-            Self::Pow2 { mask: size - 1 }
-        } else {
-            Self::Repeat {
-                size,
-                period: i64::from(size) << COORDINATE_BITS,
-            }
+        Self {
+            size,
+            period: i64::from(size) << COORDINATE_BITS,
         }
     }
 }
 
-impl Axis for Wrapped {
+impl Axis for Repeated {
     type Coord = i64;
 
     #[inline(always)]
     fn coord(self, value: i64) -> i64 {
-        match self {
-            // The period is below 2^62, so the reduced value is a positive i64.
-            Self::Repeat { period, .. } => value.rem_euclid(period),
-            Self::Clamp { .. } | Self::Pow2 { .. } => value,
-        }
+        // The period is below 2^62, so the reduced value is a positive i64.
+        value.rem_euclid(self.period)
     }
 
     #[inline(always)]
@@ -131,48 +154,77 @@ impl Axis for Wrapped {
 
     #[inline(always)]
     fn advance(self, coord: i64, step: i64) -> i64 {
-        match self {
-            Self::Repeat { period, .. } => {
-                // Both below the period, which is below 2^62: no overflow.
-                let moved = coord + step;
-                if moved >= period {
-                    moved - period
-                } else {
-                    moved
-                }
-            }
-            // The integer bits a power-of-two side reads (up to 2^15) survive wrapping.
-            Self::Clamp { .. } | Self::Pow2 { .. } => coord.wrapping_add(step),
+        // Both below the period, which is below 2^62: no overflow.
+        let moved = coord + step;
+        if moved >= self.period {
+            moved - self.period
+        } else {
+            moved
         }
     }
 
     #[inline(always)]
     fn nearest(self, coord: i64) -> u32 {
-        let texel = coord >> COORDINATE_BITS;
-        match self {
-            Self::Clamp { last } => texel.clamp(0, last) as u32,
-            // Two's complement: the low bits of the floor are the floor modulo the side.
-            Self::Pow2 { mask } => texel as u32 & mask,
-            Self::Repeat { .. } => texel as u32,
+        (coord >> COORDINATE_BITS) as u32
+    }
+
+    #[inline(always)]
+    fn linear(self, coord: i64) -> (u32, u32, u32) {
+        let left = (coord >> COORDINATE_BITS) as u32;
+        let right = if left + 1 == self.size { 0 } else { left + 1 };
+        let fraction = (coord >> (COORDINATE_BITS - 16)) as u32 & 0xFFFF;
+        (left, right, fraction)
+    }
+}
+
+/// Clamp-to-edge addressing: texel indices are clamped to the side.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Clamped {
+    last: i64,
+}
+
+impl Clamped {
+    /// Addressing for a side of `size` texels (at least 1).
+    #[inline]
+    pub(crate) fn new(size: u32) -> Self {
+        Self {
+            last: i64::from(size.max(1) - 1),
         }
+    }
+}
+
+impl Axis for Clamped {
+    type Coord = i64;
+
+    #[inline(always)]
+    fn coord(self, value: i64) -> i64 {
+        value
+    }
+
+    #[inline(always)]
+    fn step(self, gradient: i64) -> i64 {
+        gradient
+    }
+
+    #[inline(always)]
+    fn advance(self, coord: i64, step: i64) -> i64 {
+        coord.wrapping_add(step)
+    }
+
+    #[inline(always)]
+    fn nearest(self, coord: i64) -> u32 {
+        (coord >> COORDINATE_BITS).clamp(0, self.last) as u32
     }
 
     #[inline(always)]
     fn linear(self, coord: i64) -> (u32, u32, u32) {
         let texel = coord >> COORDINATE_BITS;
         let fraction = (coord >> (COORDINATE_BITS - 16)) as u32 & 0xFFFF;
-        let (left, right) = match self {
-            Self::Clamp { last } => (
-                texel.clamp(0, last) as u32,
-                (texel + 1).clamp(0, last) as u32,
-            ),
-            Self::Pow2 { mask } => (texel as u32 & mask, (texel as u32).wrapping_add(1) & mask),
-            Self::Repeat { size, .. } => {
-                let left = texel as u32;
-                (left, if left + 1 == size { 0 } else { left + 1 })
-            }
-        };
-        (left, right, fraction)
+        (
+            texel.clamp(0, self.last) as u32,
+            (texel + 1).clamp(0, self.last) as u32,
+            fraction,
+        )
     }
 }
 
@@ -186,8 +238,10 @@ mod tests {
     #[test]
     fn modes_agree_with_integer_arithmetic() {
         for size in [1u32, 2, 3, 5, 8, 64, 100, 1 << 15] {
-            let repeated = Wrapped::repeat(size);
-            let clamped = Wrapped::clamp(size);
+            let pow2 = Pow2Repeated::new(size);
+            let repeated = Repeated::new(size);
+            let clamped = Clamped::new(size);
+            assert_eq!(pow2.is_some(), size.is_power_of_two() && size > 1);
             for texel in [
                 -70_000i64, -65_537, -3, -1, 0, 1, 2, 7, 63, 99, 40_000, 131_071,
             ] {
@@ -220,13 +274,18 @@ mod tests {
         for size in [1u32, 2, 3, 16, 100, 1 << 15] {
             for step in steps {
                 let start = -ONE * 7 + 12_345;
-                let repeated = Wrapped::repeat(size);
+                let repeated = Repeated::new(size);
                 let mut coord = repeated.coord(start);
+                let mut coord2 = Pow2Repeated::new(size).map(|p| (p, p.coord(start)));
                 for k in 1..200 {
                     coord = repeated.advance(coord, repeated.step(step));
                     let value = start + k * step;
                     let want = (value >> COORDINATE_BITS).rem_euclid(i64::from(size)) as u32;
                     assert_eq!(repeated.nearest(coord), want);
+                    if let Some((p, c)) = coord2.as_mut() {
+                        *c = p.advance(*c, p.step(step));
+                        assert_eq!(p.nearest(*c), want);
+                    }
                 }
             }
         }
