@@ -82,8 +82,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     #[inline(always)]
     fn new_small(origin: Point, values: [[i64; N]; 3], bias: i64, e: [i64; 4]) -> Option<Self> {
         let [ex1, ey1, ex2, ey2] = e;
-        // |deltas| < 2^15: doubled area below 2^31, numerators below 2^49.
-        let area = ex1 * ey2 - ex2 * ey1;
+        // |deltas| < 2^15: doubled area below 2^31, numerators below 2^49. The area in 32-bit
+        // arithmetic: on Cortex-M0 a 64-bit multiply is a library call.
+        let area = i64::from(ex1 as i32 * ey2 as i32 - ex2 as i32 * ey1 as i32);
         if area == 0 {
             return None;
         }

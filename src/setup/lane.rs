@@ -115,6 +115,18 @@ impl Lane for i32 {
 
     #[inline(always)]
     fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool> {
+        // Deltas in -2^15..2^15 (every screen-sized triangle): products up to 2^30, their
+        // difference below 2^31, so 32 bits do. On Cortex-M0 a 64-bit multiply is a library
+        // call, two per triangle; the range test is a few instructions.
+        const HALF: i32 = 1 << 15;
+        let biased = a.wrapping_add(HALF)
+            | b.wrapping_add(HALF)
+            | c.wrapping_add(HALF)
+            | d.wrapping_add(HALF);
+        if (biased as u32) < 1 << 16 {
+            let cross = a * b - c * d;
+            return (cross != 0).then_some(cross > 0);
+        }
         let cross = i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d);
         (cross != 0).then_some(cross > 0)
     }
@@ -233,6 +245,29 @@ pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn cross_sign_is_exact_at_the_32_bit_limit() {
+        let h = 1 << 15;
+        let cases = [
+            (-h, -h, -h, h - 1),
+            (h - 1, h - 1, -h, h - 1),
+            (-h, h - 1, h - 1, -h),
+            (h, 1, 1, h),
+            (h, h, 0, 0),
+            (3, 5, 15, 1),
+            (-7, 9, 2, -31),
+            (i32::MAX / 2, 3, 1, 1),
+        ];
+        for (a, b, c, d) in cases {
+            let exact = i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d);
+            assert_eq!(
+                <i32 as Lane>::cross_positive(a, b, c, d),
+                (exact != 0).then_some(exact > 0),
+                "{a} {b} {c} {d}"
+            );
+        }
+    }
 
     #[test]
     fn compact_division_agrees_with_the_builtin() {
