@@ -324,20 +324,21 @@ fn walk_fast<K: SpanSink + ?Sized>(
     let mut row = plan.first;
     // Edges start at `row`; after a skipped apex, from the vertex and one step down, which
     // needs no division.
-    let start = |upper: (i32, i32), lower: (i32, i32), rounding: Rounding| {
-        if plan.skip_apex && upper == top {
-            let mut edge = EdgeStepper::start(upper, lower, rounding, top.1);
+    let start = |upper: (i32, i32), lower: (i32, i32), rounding: Rounding, below_apex: bool| {
+        if below_apex {
+            let mut edge = EdgeStepper::start(upper, lower, rounding, upper.1);
             edge.advance();
             edge
         } else {
             EdgeStepper::start(upper, lower, rounding, row)
         }
     };
-    let long = start(top, bottom, plan.long_rounding);
-    let short = if row < plan.switch {
-        start(top, middle, plan.short_rounding)
+    let upper_half = row < plan.switch;
+    let long = start(top, bottom, plan.long_rounding, plan.skip_apex);
+    let short = if upper_half {
+        start(top, middle, plan.short_rounding, plan.skip_apex)
     } else {
-        start(middle, bottom, plan.short_rounding)
+        start(middle, bottom, plan.short_rounding, false)
     };
     let long_left = plan.triangle.long_edge_left;
     let (mut left, mut right) = if long_left {
@@ -347,7 +348,7 @@ fn walk_fast<K: SpanSink + ?Sized>(
     };
     // Rows run in at most two stretches, above and below the middle vertex, so each row
     // tests one bound only.
-    let mut stop = if row < plan.switch {
+    let mut stop = if upper_half {
         plan.switch.min(plan.end)
     } else {
         plan.end
