@@ -192,24 +192,18 @@ fn nearer_surface_wins(seed: u64) -> Result<(), TestCaseError> {
             // Alone, a surface shows unless its depth rounds to the cleared 65,535, which
             // `Less` rejects: certain only where the exact depth is below 65,534 (the drawn
             // depth is within one unit of it).
-            (true, false) => {
-                let a = exact_depth(va, da, p);
-                if a.0 < 65_534 * a.1 {
-                    prop_assert_eq!(shown, Some(Rgb565::RED), "{:?}", p);
+            (true, false) | (false, true) => {
+                let (exact, color) = if ca {
+                    (exact_depth(va, da, p), Rgb565::RED)
+                } else {
+                    (exact_depth(vb, db, p), Rgb565::BLUE)
+                };
+                if exact.0 < 65_534 * exact.1 {
+                    prop_assert_eq!(shown, Some(color), "{:?}", p);
                 }
                 if shown.is_some() {
-                    prop_assert_eq!(shown, Some(Rgb565::RED), "{:?}", p);
-                    prop_assert!(near(a));
-                }
-            }
-            (false, true) => {
-                let b = exact_depth(vb, db, p);
-                if b.0 < 65_534 * b.1 {
-                    prop_assert_eq!(shown, Some(Rgb565::BLUE), "{:?}", p);
-                }
-                if shown.is_some() {
-                    prop_assert_eq!(shown, Some(Rgb565::BLUE), "{:?}", p);
-                    prop_assert!(near(b));
+                    prop_assert_eq!(shown, Some(color), "{:?}", p);
+                    prop_assert!(near(exact));
                 }
             }
             (true, true) => {

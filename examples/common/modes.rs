@@ -178,23 +178,26 @@ pub fn draw<const N: usize>(
     }
 }
 
-#[inline(never)]
 fn draw_flat(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
-    for t in triangles {
-        let [a, b, c] = t.vertices;
-        let _ = Triangle::new(a, b, c)
-            .into_styled(FlatStyle::new(t.color))
-            .draw(frame);
-    }
+    draw_each(triangles, frame, |t| FlatStyle::new(t.color));
 }
 
-#[inline(never)]
 fn draw_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    draw_each(triangles, frame, |t| GouraudStyle::new(t.vertex_colors));
+}
+
+/// Draws each triangle with the style `style_of` gives it: one function per style.
+#[inline(never)]
+fn draw_each<S>(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    style_of: impl Fn(&SceneTriangle) -> S,
+) where
+    Triangle: embedded_graphics::primitives::StyledDrawable<S, Color = Rgb565, Output = ()>,
+{
     for t in triangles {
         let [a, b, c] = t.vertices;
-        let _ = Triangle::new(a, b, c)
-            .into_styled(GouraudStyle::new(t.vertex_colors))
-            .draw(frame);
+        let _ = Triangle::new(a, b, c).into_styled(style_of(t)).draw(frame);
     }
 }
 

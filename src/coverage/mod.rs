@@ -366,7 +366,7 @@ fn walk_fast<K: SpanSink + ?Sized>(
         if row == plan.end {
             return Ok(());
         }
-        // The short edge turns at the middle vertex, where it starts without a division.
+        // The short edge turns at the middle vertex, where its bound needs no division.
         stop = plan.end;
         let lower = EdgeStepper::start(middle, bottom, plan.short_rounding, row);
         if long_left {
