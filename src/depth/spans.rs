@@ -7,7 +7,7 @@ use super::{DepthBuffer, DepthTest};
 use crate::{
     coverage::{walk_erased, FillRule, Span, SpanSink},
     geometry::Triangle,
-    interpolate::Planes,
+    interpolate::{Planes, TrackedPlanes},
     shading::paint::{PaintVisitor, Painter},
 };
 
@@ -42,7 +42,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
             target: self.target,
             buffer: self.buffer,
             painter,
-            depth,
+            depth: TrackedPlanes::new(depth),
             origin: (self.window.top_left.x, self.window.top_left.y),
             flip,
             slack,
@@ -57,7 +57,7 @@ struct DepthSpans<'a, 'b, D, P> {
     target: &'a mut D,
     buffer: &'a mut DepthBuffer<'b>,
     painter: P,
-    depth: Planes<1>,
+    depth: TrackedPlanes<1>,
     /// The window's top-left corner: the buffer's (0, 0).
     origin: (i32, i32),
     /// The test as `(depth ^ flip) < (stored ^ flip) + slack`.
@@ -82,7 +82,7 @@ where
             return Ok(());
         };
         let start = self.depth.at(span.x, span.y)[0];
-        let step = self.depth.step[0];
+        let step = self.depth.planes.step[0];
         // In i32 the comparison needs no unsigned tricks: both sides stay below 2^17.
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
         let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;

@@ -10,4 +10,4 @@ mod barycentric;
 mod planes;
 
 pub use barycentric::{Barycentric, Location};
-pub(crate) use planes::Planes;
+pub(crate) use planes::{Planes, TrackedPlanes};

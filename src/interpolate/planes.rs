@@ -1,5 +1,7 @@
 //! Plane equations of per-vertex attributes, in fixed point.
 
+use core::cell::Cell;
+
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
@@ -180,6 +182,65 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 }
 
+/// [`Planes`] that remember their last evaluation and reach the next one by additions when it
+/// is near: the start of the next span is usually one row down and a pixel or two across, and
+/// each gradient added is cheaper than the multiplications of a direct evaluation (two 64-bit
+/// multiplies per plane, library calls on Cortex-M0). The result is the direct evaluation's,
+/// bit for bit: both are sums in wrapping 64-bit arithmetic.
+#[derive(Clone, Debug)]
+pub(crate) struct TrackedPlanes<const N: usize, const SETUP: u32 = 32> {
+    pub(crate) planes: Planes<N, SETUP>,
+    /// The last point evaluated and its values; at first the reference point and its base.
+    last: Cell<(i32, i32, [i64; N])>,
+}
+
+impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
+    /// Furthest horizontal move reached by additions; further ones multiply.
+    const NEAR: i32 = 4;
+
+    #[inline(always)]
+    pub(crate) fn new(planes: Planes<N, SETUP>) -> Self {
+        let last = Cell::new((planes.origin.x, planes.origin.y, planes.base));
+        Self { planes, last }
+    }
+
+    /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].
+    /// Out of line: once per span, and one copy serves every loop that starts spans.
+    #[inline(never)]
+    pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
+        let (last_x, last_y, mut values) = self.last.get();
+        let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
+        if (dy == 0 || dy == 1) && (-Self::NEAR..=Self::NEAR).contains(&dx) {
+            let planes = &self.planes;
+            for k in 0..N {
+                let mut value = values[k];
+                if dy == 1 {
+                    value = value.wrapping_add(planes.dy[k]);
+                }
+                let step = if dx < 0 {
+                    planes.dx[k].wrapping_neg()
+                } else {
+                    planes.dx[k]
+                };
+                for _ in 0..dx.unsigned_abs() {
+                    value = value.wrapping_add(step);
+                }
+                values[k] = value;
+            }
+        } else {
+            values = self.planes.at_exact(x, y);
+        }
+        self.last.set((x, y, values));
+        values
+    }
+
+    /// All values at pixel `(x, y)`, raw 16.16 (bias included): [`Planes::at`].
+    #[inline(always)]
+    pub(crate) fn at(&self, x: i32, y: i32) -> [u32; N] {
+        Planes::<N, SETUP>::to_step_units(&self.at_exact(x, y))
+    }
+}
+
 /// One plane of [`Planes::new_exact`]: value at `reference` and gradients, in units of
 /// 2^-(16 + `scale_bits`), by exact 128-bit arithmetic; `None` for degenerate triangles. Not
 /// generic, so that every plane count and precision shares one copy of the 128-bit code.
@@ -296,6 +357,46 @@ mod tests {
             let want = exact(v, [0, 200 << 16, 100 << 16], x, y);
             let got = planes.at(x as i32, y as i32)[0];
             assert!(close(got, want), "({x},{y}): {got} vs {want:?}");
+        }
+    }
+
+    #[test]
+    fn tracked_evaluation_is_the_direct_one() {
+        let v = [Point::new(-3, 2), Point::new(40, 9), Point::new(7, 31)];
+        let values = [
+            [0x12_3456, -0x7_0000],
+            [0xFF_0000, 0x2_8000],
+            [-0x40_0000, 0x33_3333],
+        ];
+        let planes = Planes::<2>::new(v, values, 1 << 15, Point::new(-5, -5)).unwrap();
+        let tracked = TrackedPlanes::new(planes);
+        // Next rows a few pixels across, same row, far jumps, back up, repeats.
+        let path = [
+            (0, 0),
+            (1, 1),
+            (-1, 2),
+            (3, 3),
+            (3, 3),
+            (7, 3),
+            (2, 4),
+            (40, 5),
+            (-9, 6),
+            (-4, 7),
+            (0, 2),
+            (0, 3),
+            (4, 4),
+            (0, 5),
+            (-4, 6),
+            (20, 30),
+            (21, 31),
+        ];
+        for (x, y) in path {
+            assert_eq!(
+                tracked.at_exact(x, y),
+                planes.at_exact(x, y),
+                "at ({x}, {y})"
+            );
+            assert_eq!(tracked.at(x, y), planes.at(x, y));
         }
     }
 

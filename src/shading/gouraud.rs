@@ -12,7 +12,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Triangle,
-    interpolate::Planes,
+    interpolate::{Planes, TrackedPlanes},
 };
 
 /// Fills a triangle with colours interpolated between its vertices.
@@ -164,7 +164,7 @@ where
         let bias = if self.dither { 0 } else { 1 << 15 };
         let planes = Planes::new(triangle.vertices, values, bias, window.top_left)?;
         Some(visitor.visit(GouraudPainter {
-            planes,
+            planes: TrackedPlanes::new(planes),
             dither: self.dither,
             color: PhantomData,
         }))
@@ -174,7 +174,7 @@ where
 /// The painter of a Gouraud triangle, dithered or not: one type, so the edge walk is built
 /// once per target; each run picks its span loop.
 struct GouraudPainter<C, const N: usize> {
-    planes: Planes<N>,
+    planes: TrackedPlanes<N>,
     dither: bool,
     color: PhantomData<C>,
 }
@@ -222,7 +222,10 @@ where
 }
 
 /// Colours along a span: channels stepped by additions, rounded to nearest or dithered.
-struct GouraudShader<'a, C, const N: usize, const DITHER: bool>(&'a Planes<N>, PhantomData<C>);
+struct GouraudShader<'a, C, const N: usize, const DITHER: bool>(
+    &'a TrackedPlanes<N>,
+    PhantomData<C>,
+);
 
 impl<C, const N: usize, const DITHER: bool> PixelShader for GouraudShader<'_, C, N, DITHER>
 where
@@ -235,7 +238,7 @@ where
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
-        (x, y, self.0.at(x, y), self.0.step)
+        (x, y, self.0.at(x, y), self.0.planes.step)
     }
 
     #[inline(always)]

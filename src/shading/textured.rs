@@ -12,7 +12,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Triangle,
-    interpolate::Planes,
+    interpolate::{Planes, TrackedPlanes},
     texture::{
         Axis, Clamped, Direct, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS,
     },
@@ -337,7 +337,7 @@ where
 /// the others with the style's addressing.
 struct TexturedPainter<T, const M: usize> {
     texture: T,
-    coordinates: Planes<2, COORDINATE_BITS>,
+    coordinates: TrackedPlanes<2, COORDINATE_BITS>,
     tint: Option<Planes<M>>,
     bilinear: bool,
     /// How runs that leave the texture are addressed.
@@ -379,7 +379,7 @@ where
         };
         Self {
             texture,
-            coordinates,
+            coordinates: TrackedPlanes::new(coordinates),
             tint,
             bilinear,
             addressing,
@@ -393,6 +393,7 @@ where
         &self,
         (u, v): (A, A),
         (du, dv): (A::Coord, A::Coord),
+        start: [i64; 2],
         run: Span,
         target: &mut D,
     ) -> Result<(), D::Error>
@@ -408,7 +409,7 @@ where
                 du,
                 dv,
             },
-            coordinates: &self.coordinates,
+            start,
             tint: &self.tint,
             bilinear: self.bilinear,
         };
@@ -418,13 +419,12 @@ where
     /// True when `run`'s coordinates stay inside the texture at both ends (so everywhere
     /// between: they are linear along a row).
     #[inline(always)]
-    fn inside(&self, run: Span) -> bool {
+    fn inside(&self, run: Span, start: [i64; 2]) -> bool {
         let planes = &self.coordinates;
-        let start = planes.at_exact(run.x, run.y);
         let steps = i64::from(run.len) - 1;
         (0..2).all(|k| {
             let end = steps
-                .checked_mul(planes.dx[k])
+                .checked_mul(planes.planes.dx[k])
                 .and_then(|d| d.checked_add(start[k]));
             end.is_some_and(|end| {
                 let limit = 0..self.limits[k];
@@ -444,11 +444,13 @@ where
     where
         D: DrawTarget<Color = T::Color>,
     {
-        if self.inside(run) {
-            let steps = (self.coordinates.dx[0], self.coordinates.dx[1]);
-            self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, run, target)
+        // The coordinates at the run's start, evaluated once for the test and the loop.
+        let start = self.coordinates.at_exact(run.x, run.y);
+        if self.inside(run, start) {
+            let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
+            self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, run, target)
         } else {
-            self.shade_addressed(run, target)
+            self.shade_addressed(run, start, target)
         }
     }
 
@@ -456,29 +458,29 @@ where
     /// both modulations, which it reads per pixel. Out of line: rarer than runs inside (but
     /// most runs of a tiled texture), and flash matters more.
     #[inline(never)]
-    fn shade_addressed<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn shade_addressed<D>(&self, run: Span, start: [i64; 2], target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        let steps = (self.coordinates.dx[0], self.coordinates.dx[1]);
+        let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
         match (self.addressing, self.bilinear) {
             (Addressing::Clamp(u, v), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), steps, run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), steps, start, run, target)
             }
             (Addressing::Clamp(u, v), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), steps, run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), steps, start, run, target)
             }
             (Addressing::Pow2(u, v, du, dv), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, target)
             }
             (Addressing::Pow2(u, v, du, dv), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, target)
             }
             (Addressing::Repeat(u, v, du, dv), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, target)
             }
             (Addressing::Repeat(u, v, du, dv), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, target)
             }
         }
     }
@@ -573,7 +575,8 @@ where
 /// The per-pixel shader of a textured triangle.
 struct TexturedShader<'a, T, A: Axis, const M: usize, const FILTER: u8, const TINT: u8> {
     sampler: Sampler<T, A>,
-    coordinates: &'a Planes<2, COORDINATE_BITS>,
+    /// Coordinates at the run's first pixel, in 2^-46 texels.
+    start: [i64; 2],
     tint: &'a Option<Planes<M>>,
     /// The style's filter, for loops whose `FILTER` is `EITHER`.
     bilinear: bool,
@@ -603,7 +606,7 @@ where
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
-        let [u, v] = self.coordinates.at_exact(x, y);
+        let [u, v] = self.start;
         let (tint, tint_step) = match (TINT != NO, self.tint) {
             (true, Some(planes)) => (planes.at(x, y), planes.step),
             _ => ([0; M], [0; M]),
