@@ -6,10 +6,11 @@
 //! every frame matches.
 //!
 //! ```text
-//! cargo run --release --target thumbv6m-none-eabi --example firmware --features firmware
-//! ../shared/embedded/xcargo thumbv6m-none-eabi run --release --example firmware --features firmware
+//! cargo run --profile measure --target thumbv6m-none-eabi --example firmware --features firmware
+//! ../shared/embedded/xcargo thumbv6m-none-eabi run --profile measure --example firmware --features firmware
 //! ```
 //!
+//! The `measure` profile (one codegen unit) is the one the published figures use.
 //! Instruction counts come from SysTick under `qemu -icount shift=3`, where one tick is five
 //! instructions: exact to five instructions per measured frame, and the same on every run.
 //! Only drawing is counted: the scene's triangles are generated before.
