@@ -401,6 +401,43 @@ mod tests {
     }
 
     #[test]
+    fn tracked_evaluation_follows_any_path() {
+        let v = [
+            Point::new(-30, 12),
+            Point::new(400, 90),
+            Point::new(70, 310),
+        ];
+        let values = [
+            [0x12_3456, -0x7_0000, 3],
+            [-0xFF_0000, 0x2_8000, 1 << 30],
+            [0x40_0000, 0x33_3333, -5],
+        ];
+        let planes = Planes::<3>::new(v, values, 0, Point::new(0, 0)).unwrap();
+        let tracked = TrackedPlanes::new(planes);
+        // Rows down with edge-like steps, restarts, jumps anywhere (a linear congruential walk).
+        let (mut x, mut y, mut seed) = (0i32, 0i32, 12345u64);
+        for _ in 0..20_000 {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let r = (seed >> 33) as i32;
+            match r & 7 {
+                0 => (x, y) = (r >> 3, r >> 12),
+                1 => x = x.wrapping_add(r >> 8),
+                _ => {
+                    x = x.wrapping_add((r >> 3) % 9 - 4 + (r & 16));
+                    y = y.wrapping_add(1);
+                }
+            }
+            assert_eq!(
+                tracked.at_exact(x, y),
+                planes.at_exact(x, y),
+                "at ({x}, {y})"
+            );
+        }
+    }
+
+    #[test]
     fn degenerate_is_none() {
         let v = [Point::new(0, 0), Point::new(5, 5), Point::new(10, 10)];
         assert!(Planes::<2>::new(v, [[0, 0], [1, 1], [2, 2]], 0, Point::zero()).is_none());

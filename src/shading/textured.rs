@@ -421,11 +421,9 @@ where
     #[inline(always)]
     fn inside(&self, run: Span, start: [i64; 2]) -> bool {
         let planes = &self.coordinates;
-        let steps = i64::from(run.len) - 1;
+        let steps = run.len - 1;
         (0..2).all(|k| {
-            let end = steps
-                .checked_mul(planes.planes.dx[k])
-                .and_then(|d| d.checked_add(start[k]));
+            let end = across(steps, planes.planes.dx[k]).and_then(|d| d.checked_add(start[k]));
             end.is_some_and(|end| {
                 let limit = 0..self.limits[k];
                 limit.contains(&start[k]) && limit.contains(&end)
@@ -433,25 +431,19 @@ where
         })
     }
 
-    /// Shades `run` with this filter's and modulation's loop when it stays inside the texture
-    /// (no addressing), else with the addressed loop.
+    /// Shades `run`, which stays inside the texture, with this filter's and modulation's loop.
     #[inline(always)]
     fn shade_direct<D, const FILTER: u8, const TINT: u8>(
         &self,
         run: Span,
+        start: [i64; 2],
         target: &mut D,
     ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        // The coordinates at the run's start, evaluated once for the test and the loop.
-        let start = self.coordinates.at_exact(run.x, run.y);
-        if self.inside(run, start) {
-            let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
-            self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, run, target)
-        } else {
-            self.shade_addressed(run, start, target)
-        }
+        let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
+        self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, run, target)
     }
 
     /// Shades a run that leaves the texture: a loop per wrap mode and filter, each serving
@@ -486,6 +478,20 @@ where
     }
 }
 
+/// `steps * gradient`, or `None` if it might not fit `i64`. One 64-bit multiply for runs
+/// under 2^16 pixels and gradients under 2^47 (two texels per pixel), whose product fits: a
+/// checked 64-bit product is a 128-bit one, several library calls per span on Cortex-M0.
+#[inline(always)]
+fn across(steps: u32, gradient: i64) -> Option<i64> {
+    let magnitude = gradient.unsigned_abs();
+    if steps < 1 << 16 && magnitude < 1 << 47 {
+        let product = (magnitude * u64::from(steps)) as i64; // below 2^63
+        Some(if gradient < 0 { -product } else { product })
+    } else {
+        i64::from(steps).checked_mul(gradient)
+    }
+}
+
 /// How a textured triangle addresses runs that leave the texture, with the per-pixel steps in
 /// the addressing's terms (computed once per triangle).
 #[derive(Copy, Clone, Debug)]
@@ -511,11 +517,16 @@ where
     where
         D: DrawTarget<Color = T::Color>,
     {
+        // The coordinates at the run's start, evaluated once for the test and the loop.
+        let start = self.coordinates.at_exact(run.x, run.y);
+        if !self.inside(run, start) {
+            return self.shade_addressed(run, start, target);
+        }
         match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.shade_direct::<_, NO, NO>(run, target),
-            (true, false) => self.shade_direct::<_, YES, NO>(run, target),
-            (false, true) => self.shade_direct::<_, NO, YES>(run, target),
-            (true, true) => self.shade_direct::<_, YES, YES>(run, target),
+            (false, false) => self.shade_direct::<_, NO, NO>(run, start, target),
+            (true, false) => self.shade_direct::<_, YES, NO>(run, start, target),
+            (false, true) => self.shade_direct::<_, NO, YES>(run, start, target),
+            (true, true) => self.shade_direct::<_, YES, YES>(run, start, target),
         }
     }
 }
@@ -654,4 +665,33 @@ where
         let factor = (factors[k] as i32).clamp(0, 1 << 16) as u32;
         ((u32::from(channels[k]) * factor + (1 << 15)) >> 16) as u8
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn products_across_runs_are_exact_or_refused() {
+        let gradients = [
+            0,
+            1,
+            -1,
+            0xFFFF,
+            1 << 46,
+            -(1 << 46) + 7,
+            (1 << 47) - 1,
+            -(1 << 47) + 1,
+            1 << 47,
+            i64::MAX,
+            i64::MIN,
+        ];
+        for steps in [0, 1, 2, 0xFFFF, 1 << 16, u32::MAX] {
+            for gradient in gradients {
+                let exact = i128::from(steps) * i128::from(gradient);
+                match super::across(steps, gradient) {
+                    Some(p) => assert_eq!(i128::from(p), exact, "{steps} x {gradient}"),
+                    None => assert!(i64::try_from(exact).is_err(), "{steps} x {gradient}"),
+                }
+            }
+        }
+    }
 }
