@@ -93,21 +93,17 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         // Gradient = numerator / area, to 2^-SETUP: numerator * 2^(SETUP - 16) (raw values
         // carry 2^-16) times 2^62 / |area|, shifted down by 62 - (SETUP - 16). The reciprocal
         // is below 2^62 and the products below 2^111.
-        // Signed and below 2^62 in magnitude: a 64 x 64 -> 128-bit multiply per gradient.
-        let reciprocal = ((1u64 << 62) / area.unsigned_abs()) as i64 * area.signum();
+        let reciprocal = (1u64 << 62) / area.unsigned_abs();
         let shift = 62 - (SETUP - STEP_BITS);
-        let gradient = |numerator: i64| {
-            let scaled =
-                (i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift;
-            // Only the low 64 bits matter: evaluation wraps, and true values fit.
-            scaled as i64
-        };
+        let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
         let mut planes = Self::empty(origin);
+        let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
             let (da1, da2) = (a1 - a0, a2 - a0);
-            planes.dx[k] = gradient(da1 * ey2 - da2 * ey1);
-            planes.dy[k] = gradient(da2 * ex1 - da1 * ex2);
+            let [nx, ny] = numerators(da1, da2, e);
+            planes.dx[k] = gradient(nx);
+            planes.dy[k] = gradient(ny);
             planes.base[k] = (a0 + bias) << (SETUP - STEP_BITS);
         }
         planes.finish();
@@ -179,6 +175,92 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     #[inline(always)]
     pub(crate) fn at(&self, x: i32, y: i32) -> [u32; N] {
         Self::to_step_units(&self.at_exact(x, y))
+    }
+}
+
+/// `numerator * ±reciprocal / 2^shift`, rounded half up (negative when `negative` says), as
+/// wrapping `i64`: only the low 64 bits of a gradient matter. `reciprocal` is below 2^62,
+/// `numerator` below 2^62 in magnitude and `shift` at least 17. One 64 x 64 -> 128-bit
+/// product, a few multiply instructions on cores with a 32 x 32 -> 64-bit multiply.
+#[cfg_attr(not(target_has_atomic = "32"), allow(dead_code))]
+#[inline(always)]
+fn scale_wide(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    let reciprocal = if negative {
+        -(reciprocal as i64)
+    } else {
+        reciprocal as i64
+    };
+    ((i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift) as i64
+}
+
+/// [`scale_wide`], bit for bit, for small cores (Cortex-M0/M0+ and others without atomic
+/// compare-and-swap, which `target_has_atomic` tells apart), where a 64-bit multiply is a
+/// library call and a 128-bit product six or seven of them. Numerators that are whole multiples
+/// of 2^16 (colours and depths, whose values are integers in 16.16) drop those bits and the
+/// shift with them; numerators below 2^32 then take two 32 x 32 -> 64-bit products. On
+/// Cortex-M4 the branches cost more than they save (measured: +40% per small Gouraud
+/// triangle), so it keeps [`scale_wide`].
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(always)]
+fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    // The magnitude of the product, below 2^112.
+    let product = |magnitude: u64| -> i128 {
+        let product = if magnitude < 1 << 32 {
+            let low = magnitude * (reciprocal & 0xFFFF_FFFF);
+            let high = magnitude * (reciprocal >> 32);
+            u128::from(low) + (u128::from(high) << 32)
+        } else {
+            u128::from(magnitude) * u128::from(reciprocal)
+        };
+        product as i128
+    };
+    let sign = |product: i128| {
+        if (numerator < 0) == negative {
+            product
+        } else {
+            -product
+        }
+    };
+    // Two branches, so that each shift is a constant once inlined: a variable 128-bit shift
+    // is long code.
+    #[allow(clippy::verbose_bit_mask)] // One AND; counting zeros is a library call on M0.
+    if numerator & 0xFFFF == 0 {
+        let scaled = sign(product((numerator >> 16).unsigned_abs()));
+        ((scaled + (1 << (shift - 17))) >> (shift - 16)) as i64
+    } else {
+        let scaled = sign(product(numerator.unsigned_abs()));
+        ((scaled + (1 << (shift - 1))) >> shift) as i64
+    }
+}
+
+#[cfg(not(target_has_atomic = "32"))]
+use scale_split as scale;
+#[cfg(target_has_atomic = "32")]
+use scale_wide as scale;
+
+/// The gradient numerators `[da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]` of a plane with
+/// value deltas `da1`, `da2` along edges `e = [ex1, ey1, ex2, ey2]` (each below 2^15).
+///
+/// Value deltas below 2^32 (every attribute the crate interpolates) are split into 16-bit
+/// halves, so that every product is a 32-bit multiply: on Cortex-M0 a 64-bit one is a library
+/// call, twelve per Gouraud triangle. Bit for bit the 64-bit result.
+#[inline(always)]
+fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
+    let [ex1, ey1, ex2, ey2] = e;
+    let cross = |a: i64, b: i32, c: i64, d: i32| -> i64 {
+        // a = high * 2^16 + low, with |high| < 2^16 and 0 <= low < 2^16: each product below
+        // 2^31 in magnitude.
+        let (a_high, a_low) = ((a >> 16) as i32, (a & 0xFFFF) as i32);
+        let (c_high, c_low) = ((c >> 16) as i32, (c & 0xFFFF) as i32);
+        let high = i64::from(a_high * b) - i64::from(c_high * d);
+        let low = i64::from(a_low * b) - i64::from(c_low * d);
+        (high << 16) + low
+    };
+    if da1.unsigned_abs() < 1 << 32 && da2.unsigned_abs() < 1 << 32 {
+        [cross(da1, ey2, da2, ey1), cross(da2, ex1, da1, ex2)]
+    } else {
+        let [ex1, ey1, ex2, ey2] = e.map(i64::from);
+        [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
     }
 }
 
@@ -434,6 +516,85 @@ mod tests {
                 planes.at_exact(x, y),
                 "at ({x}, {y})"
             );
+        }
+    }
+
+    #[test]
+    fn scaling_is_the_128_bit_product() {
+        let numerators = [
+            0i64,
+            1,
+            -1,
+            3 << 16,
+            -(255 << 16) * 40_000,
+            0xFFFF_FFFF,
+            -0xFFFF_FFFF,
+            1 << 32,
+            (1 << 49) - 1,
+            -(1 << 49) + 12_345,
+            0x1_2345_0000,
+            -0x7FFF_0000,
+        ];
+        let reciprocals = [
+            1u64,
+            3,
+            (1 << 62) / 7,
+            (1 << 62) / 65_535,
+            1 << 61,
+            (1 << 62) / ((1 << 31) - 1),
+        ];
+        for &n in &numerators {
+            for &r in &reciprocals {
+                for negative in [false, true] {
+                    for shift in [17, 30, 32, 46] {
+                        let signed = if negative {
+                            -i128::from(r)
+                        } else {
+                            i128::from(r)
+                        };
+                        let want = ((i128::from(n) * signed + (1 << (shift - 1))) >> shift) as i64;
+                        assert_eq!(
+                            scale(n, r, negative, shift),
+                            want,
+                            "{n} {r} {negative} {shift}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn split_numerators_are_the_64_bit_ones() {
+        let deltas = [
+            0i64,
+            1,
+            -1,
+            0xFFFF,
+            0x1_0000,
+            -0x1_0000,
+            255 << 16,
+            -(255 << 16),
+            (1 << 32) - 1,
+            -(1 << 32) + 1,
+            1 << 32,
+            -(1 << 33),
+            0x1234_5678,
+            -0x7654_3210,
+        ];
+        let sides = [0i32, 1, -1, 7, -300, (1 << 15) - 1, -(1 << 15) + 1];
+        for &da1 in &deltas {
+            for &da2 in &deltas {
+                for e in [
+                    [sides[5], sides[6], sides[3], sides[4]],
+                    [sides[1], sides[0], sides[2], sides[5]],
+                    [sides[6], sides[6], sides[5], sides[5]],
+                ] {
+                    let [ex1, ey1, ex2, ey2] = e.map(i64::from);
+                    let want = [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2];
+                    assert_eq!(numerators(da1, da2, e), want, "{da1} {da2} {e:?}");
+                }
+            }
         }
     }
 
