@@ -206,8 +206,8 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
     // The magnitude of the product, below 2^112.
     let product = |magnitude: u64| -> i128 {
         let product = if magnitude < 1 << 32 {
-            let low = magnitude * (reciprocal & 0xFFFF_FFFF);
-            let high = magnitude * (reciprocal >> 32);
+            let low = widening_mul(magnitude as u32, reciprocal as u32);
+            let high = widening_mul(magnitude as u32, (reciprocal >> 32) as u32);
             u128::from(low) + (u128::from(high) << 32)
         } else {
             u128::from(magnitude) * u128::from(reciprocal)
@@ -235,6 +235,17 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
 
 #[cfg(not(target_has_atomic = "32"))]
 use scale_split as scale;
+/// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
+/// of about forty instructions on Cortex-M0.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(always)]
+fn widening_mul(a: u32, b: u32) -> u64 {
+    let (a_high, a_low) = (a >> 16, a & 0xFFFF);
+    let (b_high, b_low) = (b >> 16, b & 0xFFFF);
+    let middle = u64::from(a_high * b_low) + u64::from(a_low * b_high);
+    (u64::from(a_high * b_high) << 32) + (middle << 16) + u64::from(a_low * b_low)
+}
+
 #[cfg(target_has_atomic = "32")]
 use scale_wide as scale;
 
@@ -560,6 +571,25 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn widening_products_are_exact() {
+        let values = [
+            0u32,
+            1,
+            0xFFFF,
+            0x1_0000,
+            0x1234_5678,
+            0x8000_0000,
+            0xFFFF_FFFE,
+            u32::MAX,
+        ];
+        for a in values {
+            for b in values {
+                assert_eq!(widening_mul(a, b), u64::from(a) * u64::from(b), "{a} x {b}");
             }
         }
     }
