@@ -46,7 +46,7 @@
 use core::fmt;
 
 use embedded_graphics::{
-    draw_target::{DrawTarget, DrawTargetExt},
+    draw_target::DrawTarget,
     geometry::{Point, Size},
     pixelcolor::PixelColor,
     primitives::Rectangle,
@@ -574,10 +574,9 @@ where
             .unwrap_or_else(|_| unreachable!("band sized in Bands::new"));
         // Never fails: the framebuffer's error is Infallible.
         let _ = band.clear(background);
-        // The band framebuffer addresses its rows from 0: drawing is translated to screen
-        // coordinates, so the band's box is `area`.
+        // The band framebuffer addresses its rows from 0: its (0, 0) is the screen's `offset`,
+        // which the painters subtract (one copy of each painter serves bands and frames).
         let offset = area.top_left;
-        let mut band = band.translated(Point::zero() - offset);
         let mut depth_band = match self.depths.as_deref_mut() {
             Some(depths) => {
                 let depths = &mut depths[..len];
@@ -600,7 +599,8 @@ where
                 (Some(depths), Some(buffer)) => {
                     let mut layered = DepthTarget::new(&mut band, buffer)
                         .unwrap_or_else(|_| unreachable!("band and depth band match"))
-                        .with_test(scene.test);
+                        .with_test(scene.test)
+                        .with_offset(offset);
                     match &item.style {
                         SceneStyle::Flat(s) => layered.draw_in(&item.triangle, depths, s, &screen),
                         SceneStyle::Gouraud(s) => {
@@ -612,9 +612,15 @@ where
                     }
                 }
                 _ => match &item.style {
-                    SceneStyle::Flat(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
-                    SceneStyle::Gouraud(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
-                    SceneStyle::Texture(s) => draw_plain_in(&item.triangle, s, &mut band, &screen),
+                    SceneStyle::Flat(s) => {
+                        draw_plain_in(&item.triangle, s, &mut band, &screen, offset)
+                    }
+                    SceneStyle::Gouraud(s) => {
+                        draw_plain_in(&item.triangle, s, &mut band, &screen, offset)
+                    }
+                    SceneStyle::Texture(s) => {
+                        draw_plain_in(&item.triangle, s, &mut band, &screen, offset)
+                    }
                 },
             };
             // The band framebuffer cannot fail.

@@ -35,16 +35,17 @@ fn random_scene<'a>(
     rng: &mut Rng,
     texture: Texels<'a, Rgb565>,
     test: DepthTest,
+    origin: Point,
 ) -> Scene<'a, Rgb565, 64> {
-    let mut scene =
-        Scene::new(Rectangle::new(Point::zero(), Size::new(W, H))).with_depth_test(test);
+    let mut scene = Scene::new(Rectangle::new(origin, Size::new(W, H))).with_depth_test(test);
     for _ in 0..rng.range(1, 40) {
         let reach = [5, 30, 3000][rng.range(0, 2) as usize];
         let v = [(); 3].map(|()| {
-            Point::new(
-                rng.range(-reach, W as i32 + reach),
-                rng.range(-reach, H as i32 + reach),
-            )
+            origin
+                + Point::new(
+                    rng.range(-reach, W as i32 + reach),
+                    rng.range(-reach, H as i32 + reach),
+                )
         });
         let triangle = Triangle { vertices: v };
         let style = match rng.range(0, 3) {
@@ -95,11 +96,13 @@ fn random_scene<'a>(
     scene
 }
 
-/// The reference: every triangle drawn in order into a full frame and depth buffer.
+/// The reference: every triangle drawn in order into a full frame and depth buffer (through
+/// embedded-graphics' translation when the scene's screen is not at the origin).
 fn full_frame(scene: &Scene<'_, Rgb565, 64>, background: Rgb565, far: u16) -> Vec<Rgb565> {
     let mut pixels = vec![background; (W * H) as usize];
     let mut depths = vec![far; (W * H) as usize];
     let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
+    let mut frame = frame.translated(Point::zero() - scene.screen().top_left);
     let mut zbuffer = DepthBuffer::new(&mut depths, W, H).unwrap();
     for item in scene.triangles() {
         match item.depths {
@@ -135,6 +138,7 @@ fn banded(scene: &Scene<'_, Rgb565, 64>, rows: u32, background: Rgb565, far: u16
         .with_far_depth(far);
     let mut pixels = vec![Rgb565::new(1, 2, 3); (W * H) as usize];
     let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
+    let mut frame = frame.translated(Point::zero() - scene.screen().top_left);
     bands.render(scene, background, &mut frame).unwrap();
     pixels
 }
@@ -149,7 +153,9 @@ proptest! {
         let texture = Texels::new(&texels, 6, 5).unwrap();
         let test = [DepthTest::Less, DepthTest::LessOrEqual, DepthTest::Greater][rng.range(0, 2) as usize];
         let far = if test == DepthTest::Greater { 0 } else { u16::MAX };
-        let scene = random_scene(&mut rng, texture, test);
+        // Screens at the origin and off it (bands then draw at an offset in both axes).
+        let origin = [Point::zero(), Point::new(-13, 21), Point::new(40, -7)][rng.range(0, 2) as usize];
+        let scene = random_scene(&mut rng, texture, test, origin);
         let background = color(&mut rng);
         let want = full_frame(&scene, background, far);
         for rows in [1, 7, 16, H, H + 5] {

@@ -40,7 +40,11 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 
-use crate::{geometry::Triangle, shading::TriangleStyle, Error};
+use crate::{
+    geometry::Triangle,
+    shading::{paint::on_screen, TriangleStyle},
+    Error,
+};
 
 /// A z-buffer: one `u16` depth per pixel, row-major, in memory you provide.
 ///
@@ -269,6 +273,9 @@ pub struct DepthTarget<'a, 'b, D> {
     buffer: &'a mut DepthBuffer<'b>,
     test: DepthTest,
     write: bool,
+    /// The target's pixel `(x, y)` is the screen's `(x, y) + offset` (non-zero only for the
+    /// band framebuffers of [`crate::band`]).
+    offset: Point,
 }
 
 impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
@@ -303,6 +310,7 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
             buffer,
             test: DepthTest::Less,
             write: true,
+            offset: Point::zero(),
         })
     }
 
@@ -407,13 +415,22 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
     where
         S: TriangleStyle<Color = D::Color>,
     {
-        let window = self.target.bounding_box();
+        let window = on_screen(self.target.bounding_box(), self.offset);
         self.draw_in(triangle, depths, style, &window)
+    }
+
+    /// The same target holding the part of the screen whose top-left corner is `offset`:
+    /// the target's and the depth buffer's `(0, 0)` is the screen's `offset`.
+    pub(crate) fn with_offset(mut self, offset: Point) -> Self {
+        self.offset = offset;
+        self
     }
 
     /// [`DepthTarget::draw`] with interpolation set up for `setup` (the whole screen, when the
     /// target is a band of it), so that colours and depths do not depend on the part drawn.
-    #[inline]
+    // Always inlined, as the plain pass's walk: shared out of line between frames and bands,
+    // it measured +17% per small depth-tested triangle on Cortex-M4F.
+    #[inline(always)]
     pub(crate) fn draw_in<S>(
         &mut self,
         triangle: &Triangle,
@@ -424,7 +441,7 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
     where
         S: TriangleStyle<Color = D::Color>,
     {
-        let window = self.target.bounding_box();
+        let window = on_screen(self.target.bounding_box(), self.offset);
         let visitor = spans::DepthVisitor {
             target: self.target,
             buffer: self.buffer,
@@ -435,6 +452,7 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
             setup: *setup,
             test: self.test,
             write: self.write,
+            offset: self.offset,
         };
         style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
     }

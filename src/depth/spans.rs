@@ -1,7 +1,7 @@
 //! The depth-tested span pass: spans are tested and written first, then their passing runs
 //! painted.
 
-use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
+use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{DepthBuffer, DepthTest};
 use crate::{
@@ -18,12 +18,15 @@ pub(super) struct DepthVisitor<'a, 'b, D> {
     pub(super) triangle: &'a Triangle,
     pub(super) depths: [u16; 3],
     pub(super) rule: FillRule,
-    /// Where spans are drawn (the target's box, which the buffer covers).
+    /// Where spans are drawn (the target's box, which the buffer covers), in screen
+    /// coordinates.
     pub(super) window: Rectangle,
     /// What interpolation is set up for (the whole screen when drawing a band of it).
     pub(super) setup: Rectangle,
     pub(super) test: DepthTest,
     pub(super) write: bool,
+    /// The target's pixel `(x, y)` is the screen's `(x, y) + offset`.
+    pub(super) offset: Point,
 }
 
 impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
@@ -47,6 +50,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
             flip,
             slack,
             write: self.write,
+            offset: self.offset,
         };
         walk_erased(self.triangle, self.rule, &self.window, &mut sink)
     }
@@ -60,6 +64,8 @@ struct DepthSpans<'a, 'b, D, P> {
     depth: TrackedPlanes<1>,
     /// The window's top-left corner: the buffer's (0, 0).
     origin: (i32, i32),
+    /// The target's pixel `(x, y)` is the screen's `(x, y) + offset`.
+    offset: Point,
     /// The test as `(depth ^ flip) < (stored ^ flip) + slack`.
     flip: u16,
     slack: u32,
@@ -109,7 +115,7 @@ where
             if self.write {
                 write_depths(stored, start, step);
             }
-            return self.painter.paint(span, self.target);
+            return self.painter.paint(span, self.offset, self.target);
         }
 
         // Mixed: paint each run of passing pixels.
@@ -129,7 +135,7 @@ where
                     y: span.y,
                     len: (i - first) as u32,
                 };
-                self.painter.paint(run, self.target)?;
+                self.painter.paint(run, self.offset, self.target)?;
             }
         }
         if let Some(first) = run_start {
@@ -138,7 +144,7 @@ where
                 y: span.y,
                 len: span.len - first as u32,
             };
-            self.painter.paint(run, self.target)?;
+            self.painter.paint(run, self.offset, self.target)?;
         }
         Ok(())
     }

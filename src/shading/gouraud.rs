@@ -2,7 +2,7 @@
 
 use core::marker::PhantomData;
 
-use embedded_graphics::{draw_target::DrawTarget, primitives::Rectangle};
+use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{
     paint::{drawable_style, PaintVisitor, Painter},
@@ -188,16 +188,17 @@ where
     // The plain loop inline in the row loop (measured: a call per span costs Cortex-M0 1.1
     // instructions per pixel on large triangles); the dithered one out of line.
     #[inline(always)]
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
         if self.dither {
-            self.paint_dithered(run, target)
+            self.paint_dithered(run, offset, target)
         } else {
             shade_span(
                 &GouraudShader::<C, N, false>(&self.planes, PhantomData),
                 run,
+                offset,
                 target,
             )
         }
@@ -209,13 +210,14 @@ where
     C: ChannelColor<Channels = [u8; N]>,
 {
     #[inline(never)]
-    fn paint_dithered<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint_dithered<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
         shade_span(
             &GouraudShader::<C, N, true>(&self.planes, PhantomData),
             run,
+            offset,
             target,
         )
     }

@@ -6,7 +6,12 @@
 //! paint runs of them. The visitor pattern keeps every combination monomorphic: the painter's
 //! concrete type, which differs per style option (filter, wrap, ...), reaches the span loop.
 
-use embedded_graphics::{draw_target::DrawTarget, pixelcolor::PixelColor, primitives::Rectangle};
+use embedded_graphics::{
+    draw_target::DrawTarget,
+    geometry::{Point, Size},
+    pixelcolor::PixelColor,
+    primitives::Rectangle,
+};
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
@@ -20,14 +25,38 @@ pub trait Painter {
     /// The colour painted.
     type Color: PixelColor;
 
-    /// Paints `run` (inside the target) into `target`.
+    /// Paints `run` (screen coordinates, inside the target) into `target`, whose pixel
+    /// `(x, y)` is the screen's `(x, y) + offset` (see [`stored`]).
     ///
     /// # Errors
     ///
     /// The target's.
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = Self::Color>;
+}
+
+/// Where `run` (screen coordinates) lies in a target whose pixel `(x, y)` is the screen's
+/// `(x, y) + offset`.
+///
+/// The offset is zero except in band rendering, whose band framebuffer holds a part of the
+/// screen from its own `(0, 0)`. Painting through an offset instead of a translating target
+/// type keeps one copy of each painter for frames and bands alike.
+#[inline(always)]
+pub(crate) fn stored(run: Span, offset: Point) -> Rectangle {
+    let top_left = Point::new(run.x.wrapping_sub(offset.x), run.y.wrapping_sub(offset.y));
+    Rectangle::new(top_left, Size::new(run.len, 1))
+}
+
+/// The screen area a target's `area` shows, when its pixel `(x, y)` is the screen's
+/// `(x, y) + offset`.
+#[inline(always)]
+pub(crate) fn on_screen(area: Rectangle, offset: Point) -> Rectangle {
+    let top_left = Point::new(
+        area.top_left.x.wrapping_add(offset.x),
+        area.top_left.y.wrapping_add(offset.y),
+    );
+    Rectangle::new(top_left, area.size)
 }
 
 /// Receives a triangle's painter and draws with it.
@@ -135,28 +164,31 @@ where
     D: DrawTarget<Color = S::Color>,
 {
     let window = target.bounding_box();
-    draw_plain_in(triangle, style, target, &window)
+    draw_plain_in(triangle, style, target, &window, Point::zero())
 }
 
 /// [`draw_plain`] with interpolation set up for `setup` (the whole screen, when `target` is a
-/// band of it), so that colours do not depend on the part of the screen drawn.
+/// band of it), so that colours do not depend on the part of the screen drawn, into a target
+/// whose pixel `(x, y)` is the screen's `(x, y) + offset`.
 #[inline(always)]
 pub(crate) fn draw_plain_in<S, D>(
     triangle: &Triangle,
     style: &S,
     target: &mut D,
     setup: &Rectangle,
+    offset: Point,
 ) -> Result<(), D::Error>
 where
     S: TriangleStyle,
     D: DrawTarget<Color = S::Color>,
 {
-    let window = target.bounding_box();
+    let window = on_screen(target.bounding_box(), offset);
     let visitor = PlainVisitor {
         target,
         triangle,
         rule: style.fill_rule(),
         window,
+        offset,
     };
     style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
 }
@@ -166,7 +198,9 @@ struct PlainVisitor<'a, D> {
     target: &'a mut D,
     triangle: &'a Triangle,
     rule: FillRule,
+    /// Where spans are drawn, in screen coordinates.
     window: Rectangle,
+    offset: Point,
 }
 
 impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
@@ -177,6 +211,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
         let mut sink = PaintSpans {
             target: self.target,
             painter,
+            offset: self.offset,
         };
         walk(self.triangle, self.rule, &self.window, &mut sink)
     }
@@ -186,6 +221,7 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
 struct PaintSpans<'a, D, P> {
     target: &'a mut D,
     painter: P,
+    offset: Point,
 }
 
 impl<D, P> SpanSink for PaintSpans<'_, D, P>
@@ -198,7 +234,7 @@ where
     // A forwarder: the painter decides what is inlined into the row loop (a flat fill is).
     #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        self.painter.paint(span, self.target)
+        self.painter.paint(span, self.offset, self.target)
     }
 }
 
@@ -209,11 +245,11 @@ impl<C: PixelColor> Painter for SolidPainter<C> {
     type Color = C;
 
     #[inline(always)]
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
-        target.fill_solid(&run.rectangle(), self.0)
+        target.fill_solid(&stored(run, offset), self.0)
     }
 }
 
@@ -224,10 +260,10 @@ impl<S: PixelShader> Painter for ShaderPainter<S> {
     type Color = S::Color;
 
     #[inline(always)]
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = S::Color>,
     {
-        shade_span(&self.0, run, target)
+        shade_span(&self.0, run, offset, target)
     }
 }

@@ -2,6 +2,7 @@
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
+use super::paint::stored;
 use crate::{coverage::Span, interpolate::Planes, Triangle};
 
 /// Computes colours pixel by pixel along a span, by additions.
@@ -23,9 +24,15 @@ pub(crate) trait PixelShader {
     const BUFFERED: bool = false;
 }
 
-/// Shades one span with `shader` into `target`.
+/// Shades one span with `shader` into `target`, whose pixel `(x, y)` is the screen's
+/// `(x, y) + offset` (see [`stored`]).
 #[inline(always)]
-pub(crate) fn shade_span<D, S>(shader: &S, span: Span, target: &mut D) -> Result<(), D::Error>
+pub(crate) fn shade_span<D, S>(
+    shader: &S,
+    span: Span,
+    offset: Point,
+    target: &mut D,
+) -> Result<(), D::Error>
 where
     D: DrawTarget,
     S: PixelShader<Color = D::Color>,
@@ -33,7 +40,7 @@ where
     let mut state = shader.start(span.x, span.y);
     if !S::BUFFERED {
         let colors = (0..span.len).map(move |_| shader.next(&mut state));
-        return target.fill_contiguous(&span.rectangle(), colors);
+        return target.fill_contiguous(&stored(span, offset), colors);
     }
     // Shaders too big to be inlined into the target's fill loop through a closure run in
     // their own loop, filling a small buffer that the target then copies.
@@ -46,12 +53,12 @@ where
         for slot in &mut buffer[1..len] {
             *slot = shader.next(&mut state);
         }
-        let area = Span {
+        let run = Span {
             x,
             y: span.y,
             len: len as u32,
-        }
-        .rectangle();
+        };
+        let area = stored(run, offset);
         target.fill_contiguous(&area, buffer[..len].iter().copied())?;
         x = x.wrapping_add(len as i32);
         remaining -= len as u32;

@@ -5,7 +5,7 @@ use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Re
 use fixed::types::I16F16;
 
 use super::{
-    paint::{drawable_style, PaintVisitor, Painter},
+    paint::{drawable_style, stored, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
@@ -395,12 +395,19 @@ where
         (du, dv): (A::Coord, A::Coord),
         start: [i64; 2],
         run: Span,
+        offset: Point,
         target: &mut D,
     ) -> Result<(), D::Error>
     where
         A: Axis,
         D: DrawTarget<Color = T::Color>,
     {
+        // Everything the loop needs at the run's start, from screen coordinates; then the run
+        // where the target stores it, so that the offset is not live in the loop.
+        let tint = match (TINT != NO, &self.tint) {
+            (true, Some(planes)) => (planes.at(run.x, run.y), planes.step),
+            _ => ([0; M], [0; M]),
+        };
         let shader = TexturedShader::<_, _, M, FILTER, TINT> {
             sampler: Sampler {
                 texture: self.texture,
@@ -410,10 +417,17 @@ where
                 dv,
             },
             start,
-            tint: &self.tint,
+            tint,
+            tinted: self.tint.is_some(),
             bilinear: self.bilinear,
         };
-        shade_span(&shader, run, target)
+        let area = stored(run, offset);
+        let run = Span {
+            x: area.top_left.x,
+            y: area.top_left.y,
+            len: run.len,
+        };
+        shade_span(&shader, run, Point::zero(), target)
     }
 
     /// True when `run`'s coordinates stay inside the texture at both ends (so everywhere
@@ -437,42 +451,49 @@ where
         &self,
         run: Span,
         start: [i64; 2],
+        offset: Point,
         target: &mut D,
     ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
         let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
-        self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, run, target)
+        self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, run, offset, target)
     }
 
     /// Shades a run that leaves the texture: a loop per wrap mode and filter, each serving
     /// both modulations, which it reads per pixel. Out of line: rarer than runs inside (but
     /// most runs of a tiled texture), and flash matters more.
     #[inline(never)]
-    fn shade_addressed<D>(&self, run: Span, start: [i64; 2], target: &mut D) -> Result<(), D::Error>
+    fn shade_addressed<D>(
+        &self,
+        run: Span,
+        start: [i64; 2],
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
         let steps = (self.coordinates.planes.dx[0], self.coordinates.planes.dx[1]);
         match (self.addressing, self.bilinear) {
             (Addressing::Clamp(u, v), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), steps, start, run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), steps, start, run, offset, target)
             }
             (Addressing::Clamp(u, v), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), steps, start, run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), steps, start, run, offset, target)
             }
             (Addressing::Pow2(u, v, du, dv), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, offset, target)
             }
             (Addressing::Pow2(u, v, du, dv), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, offset, target)
             }
             (Addressing::Repeat(u, v, du, dv), false) => {
-                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, target)
+                self.shade::<_, _, NO, EITHER>((u, v), (du, dv), start, run, offset, target)
             }
             (Addressing::Repeat(u, v, du, dv), true) => {
-                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, target)
+                self.shade::<_, _, YES, EITHER>((u, v), (du, dv), start, run, offset, target)
             }
         }
     }
@@ -513,20 +534,20 @@ where
     // Left to the compiler: out of line it is one copy per target for the plain and the
     // depth-tested walk (inlined, it measured +25 KB of flash and no faster).
     #[inline]
-    fn paint<D>(&self, run: Span, target: &mut D) -> Result<(), D::Error>
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
         // The coordinates at the run's start, evaluated once for the test and the loop.
         let start = self.coordinates.at_exact(run.x, run.y);
         if !self.inside(run, start) {
-            return self.shade_addressed(run, start, target);
+            return self.shade_addressed(run, start, offset, target);
         }
         match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.shade_direct::<_, NO, NO>(run, start, target),
-            (true, false) => self.shade_direct::<_, YES, NO>(run, start, target),
-            (false, true) => self.shade_direct::<_, NO, YES>(run, start, target),
-            (true, true) => self.shade_direct::<_, YES, YES>(run, start, target),
+            (false, false) => self.shade_direct::<_, NO, NO>(run, start, offset, target),
+            (true, false) => self.shade_direct::<_, YES, NO>(run, start, offset, target),
+            (false, true) => self.shade_direct::<_, NO, YES>(run, start, offset, target),
+            (true, true) => self.shade_direct::<_, YES, YES>(run, start, offset, target),
         }
     }
 }
@@ -584,11 +605,14 @@ where
 }
 
 /// The per-pixel shader of a textured triangle.
-struct TexturedShader<'a, T, A: Axis, const M: usize, const FILTER: u8, const TINT: u8> {
+struct TexturedShader<T, A: Axis, const M: usize, const FILTER: u8, const TINT: u8> {
     sampler: Sampler<T, A>,
     /// Coordinates at the run's first pixel, in 2^-46 texels.
     start: [i64; 2],
-    tint: &'a Option<Planes<M>>,
+    /// Modulation factors at the run's first pixel and their steps (zero without).
+    tint: ([u32; M], [u32; M]),
+    /// The style's modulation, for loops whose `TINT` is `EITHER`.
+    tinted: bool,
     /// The style's filter, for loops whose `FILTER` is `EITHER`.
     bilinear: bool,
 }
@@ -604,7 +628,7 @@ struct TexturedState<T, A: Axis, const M: usize> {
 }
 
 impl<T, A, const M: usize, const FILTER: u8, const TINT: u8> PixelShader
-    for TexturedShader<'_, T, A, M, FILTER, TINT>
+    for TexturedShader<T, A, M, FILTER, TINT>
 where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
@@ -616,12 +640,9 @@ where
     const BUFFERED: bool = FILTER != NO;
 
     #[inline(always)]
-    fn start(&self, x: i32, y: i32) -> Self::State {
+    fn start(&self, _x: i32, _y: i32) -> Self::State {
         let [u, v] = self.start;
-        let (tint, tint_step) = match (TINT != NO, self.tint) {
-            (true, Some(planes)) => (planes.at(x, y), planes.step),
-            _ => ([0; M], [0; M]),
-        };
+        let (tint, tint_step) = self.tint;
         TexturedState {
             sampler: self.sampler,
             u: self.sampler.u.coord(u),
@@ -641,7 +662,7 @@ where
         };
         state.u = sampler.u.advance(state.u, sampler.du);
         state.v = sampler.v.advance(state.v, sampler.dv);
-        if holds(TINT, self.tint.is_some()) {
+        if holds(TINT, self.tinted) {
             let factors = state.tint;
             for k in 0..M {
                 state.tint[k] = state.tint[k].wrapping_add(state.tint_step[k]);
