@@ -21,11 +21,10 @@
 mod modes;
 #[path = "common/scenes.rs"]
 mod scenes;
+#[path = "common/systick.rs"]
+mod systick;
 
-use core::sync::atomic::{AtomicU32, Ordering};
-
-use cortex_m::peripheral::{syst::SystClkSource, SYST};
-use cortex_m_rt::{entry, exception};
+use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use heapless::Vec;
@@ -34,58 +33,10 @@ use panic_halt as _;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{band::Scene as BandScene, texture::Texels, Framebuffer};
 
-/// Instructions per SysTick tick under `-icount shift=3` with a 25 MHz SysTick.
-const INSTRUCTIONS_PER_TICK: u64 = 5;
-
-/// SysTick reload: the counter wraps (and the exception counts a wrap) every 2^24 ticks.
-const RELOAD: u32 = 0x00FF_FFFF;
-
-/// SysTick wraps so far (only the exception handler writes it).
-static WRAPS: AtomicU32 = AtomicU32::new(0);
-
-#[exception]
-fn SysTick() {
-    WRAPS.store(WRAPS.load(Ordering::Relaxed) + 1, Ordering::Relaxed);
-}
-
-/// Ticks since the counter started. The exception runs as soon as the counter wraps, so an
-/// unchanged wrap count around the read means the two agree.
-fn ticks() -> u64 {
-    loop {
-        let wraps = WRAPS.load(Ordering::Relaxed);
-        let current = SYST::get_current();
-        if WRAPS.load(Ordering::Relaxed) == wraps {
-            return u64::from(wraps) * (u64::from(RELOAD) + 1) + u64::from(RELOAD - current);
-        }
-    }
-}
-
-/// Instructions spent in `f`.
-fn count(f: impl FnOnce()) -> u64 {
-    let start = ticks();
-    f();
-    (ticks() - start) * INSTRUCTIONS_PER_TICK
-}
-
-/// `value / divisor` with two decimals, for printing without floats.
-struct Ratio(u64, u64);
-
-impl core::fmt::Display for Ratio {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let hundredths = self.0 * 100 / self.1.max(1);
-        write!(f, "{}.{:02}", hundredths / 100, hundredths % 100)
-    }
-}
-
 #[entry]
 fn main() -> ! {
     let mut core = cortex_m::Peripherals::take().unwrap();
-    let syst = &mut core.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(RELOAD);
-    syst.clear_current();
-    syst.enable_interrupt();
-    syst.enable_counter();
+    systick::start(&mut core.SYST);
 
     // All of it on the stack (QEMU's boards have 4 MiB of RAM): the frame and depth buffer
     // (150 KB each), a 5,000-triangle scene and its display list for the band mode.
@@ -127,10 +78,10 @@ fn main() -> ! {
             scene.for_each(|t| {
                 let _ = triangles.push(t);
             });
-            let drawn = modes::covered_pixels(&triangles);
+            let drawn = scenes::covered_pixels(&triangles);
             pixels.fill(Rgb565::BLACK);
             let mut frame = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
-            let spent = count(|| modes::draw(mode, &triangles, &mut frame, &mut work));
+            let spent = systick::count(|| modes::draw(mode, &triangles, &mut frame, &mut work));
             let sum = modes::fnv1a(&pixels);
             let verdict = if sum == modes::expected(mode, scene) {
                 "ok"
@@ -147,8 +98,8 @@ fn main() -> ! {
                 spent,
                 drawn,
                 triangles.len(),
-                Ratio(spent, u64::from(drawn)),
-                Ratio(spent, triangles.len() as u64)
+                systick::Ratio(spent, u64::from(drawn)),
+                systick::Ratio(spent, triangles.len() as u64)
             );
         }
     }

@@ -3,7 +3,7 @@
 //! without allocation.
 #![allow(dead_code)]
 
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use fixed::types::I16F16;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
@@ -257,25 +257,6 @@ fn draw_bands<const N: usize>(
     if let Ok(mut bands) = bands {
         let _ = bands.render(list, Rgb565::BLACK, frame);
     }
-}
-
-/// Pixels a scene covers (from the coverage walk).
-pub fn covered_pixels(triangles: &[SceneTriangle]) -> u32 {
-    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut total = 0;
-    for t in triangles {
-        let [a, b, c] = t.vertices;
-        let _ = trirast::coverage::for_each_span(
-            &Triangle::new(a, b, c),
-            trirast::FillRule::TopLeft,
-            &screen,
-            |s| {
-                total += s.len;
-                Ok::<(), ()>(())
-            },
-        );
-    }
-    total
 }
 
 /// FNV-1a over the frame's raw little-endian bytes.

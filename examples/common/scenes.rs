@@ -2,7 +2,7 @@
 //! that the firmware example renders the very same triangles as the host.
 #![allow(dead_code)]
 
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 
 /// Screen width of every scene.
 pub const WIDTH: u32 = 320;
@@ -169,4 +169,24 @@ pub fn mesh(nx: i32, ny: i32, mut f: impl FnMut(SceneTriangle)) {
             }
         }
     }
+}
+
+/// Pixels the exact rasterizer covers in `triangles` (trirast's coverage walk): what the
+/// benchmarks divide by for per-pixel figures, whoever draws.
+pub fn covered_pixels(triangles: &[SceneTriangle]) -> u32 {
+    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut total = 0;
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = trirast::coverage::for_each_span(
+            &trirast::Triangle::new(a, b, c),
+            trirast::FillRule::TopLeft,
+            &screen,
+            |s| {
+                total += s.len;
+                Ok::<(), ()>(())
+            },
+        );
+    }
+    total
 }

@@ -9,52 +9,23 @@
 
 #[path = "../../../examples/common/scenes.rs"]
 mod scenes;
+#[path = "../../../examples/common/systick.rs"]
+mod systick;
 
-use core::sync::atomic::{AtomicU32, Ordering};
-
-use cortex_m::peripheral::{syst::SystClkSource, SYST};
-use cortex_m_rt::{entry, exception};
+use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_3dgfx::pipeline::{assemble::primitive::DrawPrimitive, rasterize::draw::draw};
 use embedded_graphics::{
     pixelcolor::Rgb565,
     prelude::*,
-    primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
+    primitives::{PrimitiveStyle, Triangle as EgTriangle},
 };
 use heapless::Vec;
 use nalgebra::Point2;
 use panic_halt as _;
-use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use scenes::{covered_pixels, Scene, SceneTriangle, HEIGHT, WIDTH};
+use systick::{count, Ratio};
 use trirast::Framebuffer;
-
-const INSTRUCTIONS_PER_TICK: u64 = 5;
-const RELOAD: u32 = 0x00FF_FFFF;
-static WRAPS: AtomicU32 = AtomicU32::new(0);
-
-#[exception]
-fn SysTick() {
-    WRAPS.store(WRAPS.load(Ordering::Relaxed) + 1, Ordering::Relaxed);
-}
-
-fn ticks() -> u64 {
-    loop {
-        let wraps = WRAPS.load(Ordering::Relaxed);
-        let current = SYST::get_current();
-        if WRAPS.load(Ordering::Relaxed) == wraps {
-            return u64::from(wraps) * (u64::from(RELOAD) + 1) + u64::from(RELOAD - current);
-        }
-    }
-}
-
-/// `value / divisor` with two decimals, for printing without floats.
-struct Ratio(u64, u64);
-
-impl core::fmt::Display for Ratio {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let hundredths = self.0 * 100 / self.1.max(1);
-        write!(f, "{}.{:02}", hundredths / 100, hundredths % 100)
-    }
-}
 
 const FRAME_LEN: usize = (WIDTH * HEIGHT) as usize;
 const MAX_TRIANGLES: usize = 5000;
@@ -86,34 +57,10 @@ fn gfx_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>)
     }
 }
 
-/// Pixels the exact rasterizer covers (trirast's coverage walk).
-fn covered_pixels(triangles: &[SceneTriangle]) -> u32 {
-    let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut total = 0;
-    for t in triangles {
-        let [a, b, c] = t.vertices;
-        let _ = trirast::coverage::for_each_span(
-            &trirast::Triangle::new(a, b, c),
-            trirast::FillRule::TopLeft,
-            &screen,
-            |s| {
-                total += s.len;
-                Ok::<(), ()>(())
-            },
-        );
-    }
-    total
-}
-
 #[entry]
 fn main() -> ! {
     let mut core = cortex_m::Peripherals::take().unwrap();
-    let syst = &mut core.SYST;
-    syst.set_clock_source(SystClkSource::Core);
-    syst.set_reload(RELOAD);
-    syst.clear_current();
-    syst.enable_interrupt();
-    syst.enable_counter();
+    systick::start(&mut core.SYST);
 
     let mut pixels = [Rgb565::BLACK; FRAME_LEN];
     let mut triangles: Vec<SceneTriangle, MAX_TRIANGLES> = Vec::new();
@@ -136,9 +83,7 @@ fn main() -> ! {
             let covered = covered_pixels(&triangles);
             pixels.fill(Rgb565::BLACK);
             let mut frame = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
-            let start = ticks();
-            draw_mode(&triangles, &mut frame);
-            let spent = (ticks() - start) * INSTRUCTIONS_PER_TICK;
+            let spent = count(|| draw_mode(&triangles, &mut frame));
             hprintln!(
                 "{:<13} {:<8} instructions={} pixels={} triangles={} per_pixel={} per_triangle={}",
                 name,
