@@ -31,6 +31,17 @@ use trirast::{
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
 };
 
+/// Draws an `Rgb565` framebuffer's pixels into a new display of its size.
+fn show(pixels: &[Rgb565], width: u32) -> SimulatorDisplay<Rgb888> {
+    let height = pixels.len() as u32 / width;
+    let mut display = SimulatorDisplay::new(Size::new(width, height));
+    for (i, c) in pixels.iter().enumerate() {
+        let p = Point::new((i as u32 % width) as i32, (i as u32 / width) as i32);
+        Pixel(p, Rgb888::from(*c)).draw(&mut display).unwrap();
+    }
+    display
+}
+
 /// The examples' texture: a 64x64 wooden crate (see `assets/make_crate_bmp.py`).
 const CRATE_BMP: &[u8] = include_bytes!("assets/crate.bmp");
 
@@ -66,6 +77,16 @@ const SCENES: &[Scene] = &[
         name: "gouraud_gray",
         about: "the same fade in Gray8, Gray4, Gray2 and dithered BinaryColor (left to right)",
         render: gouraud_gray,
+    },
+    Scene {
+        name: "dither_rgb565",
+        about: "a slow Rgb565 gradient, rounded (left) vs dithered (right), 4x zoom",
+        render: dither_rgb565,
+    },
+    Scene {
+        name: "translucent",
+        about: "translucent triangles over a Gouraud wheel: a HUD panel and a fan, each pixel blended once",
+        render: translucent,
     },
     Scene {
         name: "shader",
@@ -207,6 +228,15 @@ fn fan() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
 
 /// A wheel of triangles around a white centre, each rim vertex a hue.
 fn gouraud_rgb565() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (pixels, width) = gouraud_rgb565_pixels();
+    (
+        show(&pixels, width),
+        OutputSettingsBuilder::new().scale(2).build(),
+    )
+}
+
+/// The wheel of [`gouraud_rgb565`] in a 160 x 160 `Rgb565` frame, and its width.
+fn gouraud_rgb565_pixels() -> (Vec<Rgb565>, u32) {
     let mut fb_pixels = vec![Rgb565::BLACK; 160 * 160];
     let mut fb = Framebuffer::new(&mut fb_pixels, 160, 160).unwrap();
     let center = Point::new(80, 80);
@@ -244,13 +274,86 @@ fn gouraud_rgb565() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
             .draw(&mut fb)
             .unwrap();
     }
-    let mut display = SimulatorDisplay::new(Size::new(160, 160));
-    for (i, c) in fb_pixels.iter().enumerate() {
-        Pixel(Point::new(i as i32 % 160, i as i32 / 160), to_888(*c))
-            .draw(&mut display)
+    (fb_pixels, 160)
+}
+
+/// A night-sky gradient over few `Rgb565` levels: rounding shows bands, dithering hides them.
+fn dither_rgb565() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (120, 72);
+    let mut pixels = vec![Rgb565::BLACK; w * h];
+    let mut fb = Framebuffer::new(&mut pixels, w as u32, h as u32).unwrap();
+    let (top, bottom) = (Rgb565::new(1, 4, 6), Rgb565::new(6, 22, 14));
+    let half = w as i32 / 2;
+    for (x0, dither) in [(0, false), (half + 1, true)] {
+        let (x1, y1) = (x0 + half - 1, h as i32);
+        let p = Point::new;
+        for (t, colors) in [
+            (
+                Triangle::new(p(x0, 0), p(x1, 0), p(x0, y1)),
+                [top, top, bottom],
+            ),
+            (
+                Triangle::new(p(x1, 0), p(x1, y1), p(x0, y1)),
+                [top, bottom, bottom],
+            ),
+        ] {
+            t.into_styled(GouraudStyle::new(colors).with_dither(dither))
+                .draw(&mut fb)
+                .unwrap();
+        }
+    }
+    (
+        show(&pixels, w as u32),
+        OutputSettingsBuilder::new().scale(4).build(),
+    )
+}
+
+/// A Gouraud wheel under a translucent HUD panel and a translucent fan (a gauge's sweep):
+/// `Framebuffer::translucent` blends each triangle over what is there, and the fan's shared
+/// edges are blended once, so no seams darken.
+fn translucent() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (background, _) = gouraud_rgb565_pixels();
+    let mut pixels = background;
+    let mut fb = Framebuffer::new(&mut pixels, 160, 160).unwrap();
+    let p = Point::new;
+    // The panel: two triangles, black at 60%.
+    let mut panel = fb.translucent(153);
+    for t in [
+        Triangle::new(p(8, 112), p(152, 112), p(152, 152)),
+        Triangle::new(p(8, 112), p(152, 152), p(8, 152)),
+    ] {
+        t.into_styled(FlatStyle::new(Rgb565::BLACK))
+            .draw(&mut panel)
             .unwrap();
     }
-    (display, OutputSettingsBuilder::new().scale(2).build())
+    // The fan: 12 sectors from the centre, alternating white and yellow at 40%.
+    let mut fan = fb.translucent(102);
+    let center = p(80, 80);
+    let rim: Vec<Point> = (0..=12)
+        .map(|i| {
+            let t = std::f64::consts::PI * (0.75 + 1.5 * f64::from(i) / 12.0);
+            center
+                + p(
+                    (70.0 * t.cos()).round() as i32,
+                    (70.0 * t.sin()).round() as i32,
+                )
+        })
+        .collect();
+    for i in 0..12 {
+        let color = if i % 2 == 0 {
+            Rgb565::WHITE
+        } else {
+            Rgb565::YELLOW
+        };
+        Triangle::new(center, rim[i], rim[i + 1])
+            .into_styled(FlatStyle::new(color))
+            .draw(&mut fan)
+            .unwrap();
+    }
+    (
+        show(&pixels, 160),
+        OutputSettingsBuilder::new().scale(2).build(),
+    )
 }
 
 /// One fade from black to white, rendered in four colour depths.

@@ -193,6 +193,73 @@ proptest! {
         }
     }
 
+    /// Dithering in every channel of `Rgb565`: each is the exact value plus its Bayer
+    /// threshold, rounded down, except within rounding distance of a level.
+    #[test]
+    fn dither_follows_the_exact_value_in_every_channel(v in triangle(), colors in [rgb565(), rgb565(), rgb565()], window in window()) {
+        let mut target = Recorder::<Rgb565>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(colors).with_dither(true)).draw(&mut target).unwrap();
+        const BAYER: [[i128; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
+        let channels = colors.map(|c| c.channels());
+        for p in window_points(&window) {
+            let Some(c) = target.get(p) else { continue };
+            let t = BAYER[(p.y & 3) as usize][(p.x & 3) as usize];
+            for k in 0..3 {
+                let (num, den) = exact_plane(v, [0, 1, 2].map(|i| i64::from(channels[i][k])), p).unwrap();
+                // floor(num / den + (2t + 1) / 32) = floor((32 num + (2t + 1) den) / (32 den))
+                let scaled = 32 * num + (2 * t + 1) * den;
+                let want = scaled.div_euclid(32 * den);
+                let margin = scaled.rem_euclid(32 * den).min(32 * den - scaled.rem_euclid(32 * den));
+                if margin * 1024 > 32 * den {
+                    prop_assert_eq!(i128::from(c.channels()[k]), want, "channel {} of {:?} at {:?}", k, v, p);
+                }
+            }
+        }
+    }
+
+    /// The mean of each dithered 4x4 block (aligned to the pattern) is the exact mean there,
+    /// within the documented bound: 1/32 of a level plus 1.5 times the channel's change
+    /// across and down one pixel, plus 1/256 for the planes' rounding.
+    #[test]
+    fn dithered_blocks_average_the_exact_value(v in triangle(), colors in [rgb565(), rgb565(), rgb565()], gray in [0..16u8, 0..16u8, 0..16u8]) {
+        let window = Rectangle::new(Point::new(0, 0), Size::new(48, 40));
+        let mut rgb = Recorder::<Rgb565>::new(window);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(colors).with_dither(true)).draw(&mut rgb).unwrap();
+        let mut g4 = Recorder::<Gray4>::new(window);
+        let grays = gray.map(Gray4::new);
+        Triangle { vertices: v }.into_styled(GouraudStyle::new(grays).with_dither(true)).draw(&mut g4).unwrap();
+        let rgb_channels = colors.map(|c| c.channels());
+        let check = |a: [i64; 3], got: &dyn Fn(Point) -> Option<u8>| -> Result<(), TestCaseError> {
+            for by in 0..10 {
+                for bx in 0..12 {
+                    let block: Vec<Point> = (0..16).map(|i| Point::new(bx * 4 + i % 4, by * 4 + i / 4)).collect();
+                    let values: Vec<u8> = block.iter().filter_map(|&p| got(p)).collect();
+                    if values.len() < 16 {
+                        continue;
+                    }
+                    // Exact mean: the plane at the block's centre (the mean of a linear function
+                    // over a symmetric block), as 2 * num / (2 * den) with the centre at +1.5.
+                    let (n0, den) = exact_plane(v, a, block[0]).unwrap();
+                    let (n1, _) = exact_plane(v, a, block[0] + Point::new(1, 0)).unwrap();
+                    let (n2, _) = exact_plane(v, a, block[0] + Point::new(0, 1)).unwrap();
+                    let (gx, gy) = (n1 - n0, n2 - n0);
+                    // mean = (n0 + 1.5 gx + 1.5 gy) / den; in units of 1/(32 * 256 * den):
+                    let unit = 32 * 256;
+                    let exact = unit * (2 * n0 + 3 * gx + 3 * gy) / 2;
+                    let sum: i128 = values.iter().map(|&c| i128::from(c)).sum();
+                    let mean = unit * sum * den / 16;
+                    let bound = 256 * den + unit * 3 * (gx.abs() + gy.abs()) / 2 + 32 * den;
+                    prop_assert!((mean - exact).abs() <= bound, "block ({}, {}) of {:?}: mean {} exact {} bound {}", bx, by, v, mean, exact, bound);
+                }
+            }
+            Ok(())
+        };
+        for k in 0..3 {
+            check([0, 1, 2].map(|i| i64::from(rgb_channels[i][k])), &|p| rgb.get(p).map(|c| c.channels()[k]))?;
+        }
+        check(gray.map(i64::from), &|p| g4.get(p).map(|c| c.luma()))?;
+    }
+
     /// Shading changes colours, never coverage.
     #[test]
     fn same_coverage_as_flat(v in triangle(), window in window(), inclusive in any::<bool>()) {

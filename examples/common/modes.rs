@@ -44,17 +44,21 @@ pub enum Mode {
     TexBilinear,
     /// The `GouraudZ` frame as a scene rendered in 16-row bands with a depth band.
     Band,
+    /// Gouraud at half opacity over the frame (`Framebuffer::translucent`): every pixel read,
+    /// blended and written. Minus `Gouraud`, what translucency costs.
+    Translucent,
 }
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 6] = [
+    pub const ALL: [Mode; 7] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
         Mode::TexNearest,
         Mode::TexBilinear,
         Mode::Band,
+        Mode::Translucent,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -66,6 +70,7 @@ impl Mode {
             Mode::TexNearest => "tex-nearest",
             Mode::TexBilinear => "tex-bilinear",
             Mode::Band => "band",
+            Mode::Translucent => "translucent",
         }
     }
 }
@@ -73,7 +78,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 24] = [
+pub const EXPECTED: [(Mode, Scene, u32); 28] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -98,6 +103,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 24] = [
     (Mode::Band, Scene::Small, 0x0e6cf47b),
     (Mode::Band, Scene::Mesh, 0x0383d772),
     (Mode::Band, Scene::Scene200, 0x2c459411),
+    (Mode::Translucent, Scene::Big, 0x4e60f9f7),
+    (Mode::Translucent, Scene::Small, 0x4bfeb1ac),
+    (Mode::Translucent, Scene::Mesh, 0xb36319e7),
+    (Mode::Translucent, Scene::Scene200, 0x474f6d43),
 ];
 
 /// The expected checksum of `mode` on `scene`.
@@ -175,6 +184,20 @@ pub fn draw<const N: usize>(
         Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest),
         Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear),
         Mode::Band => draw_bands(triangles, frame, work),
+        Mode::Translucent => draw_translucent(triangles, frame),
+    }
+}
+
+/// Gouraud at half opacity: each pixel blended over what the frame holds.
+#[inline(never)]
+fn draw_translucent(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    let mut translucent = frame.translucent(128);
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let style = GouraudStyle::new(t.vertex_colors);
+        let _ = Triangle::new(a, b, c)
+            .into_styled(style)
+            .draw(&mut translucent);
     }
 }
 

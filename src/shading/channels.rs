@@ -97,6 +97,49 @@ pub trait ChannelColor: PixelColor {
     fn bilinear(corners: [Self; 4], x: u32, y: u32) -> Self {
         blend_channels(corners, x, y)
     }
+
+    /// This colour drawn over `under` at `opacity` (255: this colour, 0: `under`): each
+    /// channel is `(self * opacity + under * (255 - opacity)) / 255` rounded to nearest, so
+    /// within half a level of the exact blend. What [`crate::target::blend`] computes.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+    /// use trirast::shading::ChannelColor;
+    ///
+    /// assert_eq!(Gray8::new(200).over(Gray8::new(100), 51), Gray8::new(120));
+    /// ```
+    #[inline(always)]
+    #[must_use]
+    fn over(self, under: Self, opacity: u8) -> Self {
+        over_channels(self, under, opacity)
+    }
+}
+
+/// [`ChannelColor::over`] channel by channel.
+#[inline(always)]
+fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
+    let (a, b) = (u32::from(opacity), 255 - u32::from(opacity));
+    let (source, under) = (source.channels(), under.channels());
+    let mut out = C::Channels::default();
+    for ((o, &s), &d) in out
+        .as_mut()
+        .iter_mut()
+        .zip(source.as_ref())
+        .zip(under.as_ref())
+    {
+        *o = div_255_rounded(u32::from(s) * a + u32::from(d) * b) as u8;
+    }
+    C::from_channels(out)
+}
+
+/// `value / 255` rounded to nearest, for `value <= 255 * 255`, without a division (a
+/// library call on Cortex-M0).
+#[inline(always)]
+pub(crate) fn div_255_rounded(value: u32) -> u32 {
+    let t = value + 128;
+    (t + (t >> 8)) >> 8
 }
 
 /// [`ChannelColor::bilinear`] channel by channel.
@@ -193,6 +236,7 @@ macro_rules! rgb565_channels {
                 let raw = blend_565(corners.map(IntoStorage::into_storage), x, y);
                 RawU16::new(raw).into()
             }
+
         }
     )+};
 }
@@ -248,6 +292,14 @@ impl ChannelColor for BinaryColor {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn division_by_255_rounds_to_nearest() {
+        for value in 0..=255 * 255 {
+            let exact = (2 * value + 255) / 510; // round(value / 255), halves up
+            assert_eq!(div_255_rounded(value), exact, "{value}");
+        }
+    }
 
     /// The blend of one channel with weights of `bits` bits, rounded half up.
     fn reference(c: [u8; 4], x: u32, y: u32, bits: u32) -> u32 {

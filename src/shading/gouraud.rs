@@ -95,8 +95,11 @@ impl<C> GouraudStyle<C> {
     /// Dithering spreads the fraction of each interpolated channel over a 4x4 Bayer pattern,
     /// so gradients between few levels stay visible: on a monochrome (`BinaryColor`) display
     /// a fade from off to on becomes a graded stipple instead of a hard edge, and `Gray2`,
-    /// `Gray4` or `Rgb565` gradients lose their banding. Every fraction of a level is shown by
-    /// exactly that share of pixels in each 4x4 block (to 1/16).
+    /// `Gray4` or `Rgb565` gradients lose their banding. Every channel of every colour type
+    /// is dithered: a pixel takes the exact value plus its threshold (1/32, 3/32, ... 31/32),
+    /// rounded down, so the mean of each 4x4 block of the pattern is the exact mean within
+    /// 1/32 of a level plus 1.5 times the channel's change from one pixel to the next across
+    /// and down (`tests/gouraud.rs` checks both).
     ///
     /// # Examples
     ///

@@ -260,6 +260,37 @@ where
         }
     }
 
+    /// Calls `update` with each pixel of `area` that lies inside the image, row by row, and
+    /// the pixel's index within `area` (row-major): for targets that read what they write
+    /// ([`Translucent`](crate::target::Translucent)).
+    pub(super) fn update_area(&mut self, area: &Rectangle, mut update: impl FnMut(u64, &mut S)) {
+        let Some(window) = self.clip(area) else {
+            return;
+        };
+        let left = (window.x0 as i64 - i64::from(area.top_left.x)) as u64;
+        let above = (window.y0 as i64 - i64::from(area.top_left.y)) as u64;
+        let stride = u64::from(area.size.width);
+        for (k, y) in (window.y0..window.y1).enumerate() {
+            let first = (above + k as u64) * stride + left;
+            let row = &mut self.pixels[y * self.width + window.x0..y * self.width + window.x1];
+            for (j, pixel) in row.iter_mut().enumerate() {
+                update(first + j as u64, pixel);
+            }
+        }
+    }
+
+    /// The pixels of one row from column `x`, `len` long, if all inside the image.
+    #[inline(always)]
+    pub(super) fn row_mut(&mut self, y: i32, x: i32, len: u32) -> Option<&mut [S]> {
+        self.row_run(y, x, len)
+    }
+
+    /// The stored pixel at `point`, if inside.
+    pub(super) fn pixel_mut(&mut self, point: Point) -> Option<&mut S> {
+        let i = self.index(point)?;
+        self.pixels.get_mut(i)
+    }
+
     /// `fill_solid` for areas of several rows.
     #[inline(never)]
     fn fill_rows(&mut self, area: &Rectangle, value: S) {

@@ -2,10 +2,13 @@
 //!
 //! Everything in the crate draws into any embedded-graphics
 //! [`DrawTarget`](embedded_graphics::draw_target::DrawTarget). This module adds a framebuffer
-//! over caller-provided memory whose span fills write straight into the slice.
+//! over caller-provided memory whose span fills write straight into the slice, and targets
+//! that draw translucently ([`Framebuffer::translucent`], [`OverBackground`]).
 
 mod framebuffer;
 mod storage;
+mod translucency;
 
 pub use framebuffer::Framebuffer;
 pub use storage::StoredPixel;
+pub use translucency::{blend, OverBackground, Translucent};

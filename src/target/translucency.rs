@@ -1,0 +1,360 @@
+//! Translucent drawing: whatever is drawn is blended over what the pixel already shows.
+//!
+//! Blending needs the colour already there. The crate's [`Framebuffer`] can be read, so
+//! [`Framebuffer::translucent`] gives a target that blends over its pixels. A display driver
+//! cannot be read (an SPI display's memory is write-only in practice), so [`OverBackground`]
+//! blends over a background colour the caller knows, the way smooth-font renderers draw on
+//! such displays, and writes the result through.
+//!
+//! Both are ordinary embedded-graphics `DrawTarget`s: every style of the crate (and any other
+//! drawable) becomes translucent through them, with no other change. Triangles sharing an edge
+//! write each pixel of it once (the top-left rule), so a translucent mesh is blended exactly
+//! once per pixel, without the double-dark seams that overlapping edges leave.
+
+use core::convert::Infallible;
+
+use embedded_graphics::{
+    draw_target::DrawTarget, geometry::Dimensions, primitives::Rectangle, Pixel,
+};
+
+use super::{Framebuffer, StoredPixel};
+use crate::shading::ChannelColor;
+
+/// `source` drawn over `destination` at `opacity` (255: `source`, 0: `destination`): each
+/// channel is `(source * opacity + destination * (255 - opacity)) / 255`, rounded to nearest,
+/// so within half a level of the exact blend.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::{Gray8, GrayColor, Rgb565, RgbColor};
+/// use trirast::target::blend;
+///
+/// assert_eq!(blend(Gray8::new(200), Gray8::new(100), 128), Gray8::new(150));
+/// assert_eq!(blend(Rgb565::RED, Rgb565::BLUE, 255), Rgb565::RED);
+/// assert_eq!(blend(Rgb565::RED, Rgb565::BLUE, 0), Rgb565::BLUE);
+/// ```
+#[must_use]
+#[inline]
+pub fn blend<C: ChannelColor>(source: C, destination: C, opacity: u8) -> C {
+    source.over(destination, opacity)
+}
+
+impl<'a, C, S> Framebuffer<'a, C, S>
+where
+    C: ChannelColor,
+    S: StoredPixel<C>,
+{
+    /// This framebuffer as a target that blends everything drawn into it over its pixels at
+    /// `opacity` (255: opaque, 0: invisible), by [`blend`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+    /// use trirast::{target::blend, FlatStyle, Framebuffer, Triangle};
+    ///
+    /// let mut pixels = [Rgb565::BLUE; 16 * 16];
+    /// let mut frame = Framebuffer::new(&mut pixels, 16, 16)?;
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(16, 0), Point::new(0, 16));
+    /// t.into_styled(FlatStyle::new(Rgb565::RED)).draw(&mut frame.translucent(128)).unwrap();
+    /// assert_eq!(frame.pixel(Point::new(2, 2)), Some(blend(Rgb565::RED, Rgb565::BLUE, 128)));
+    /// assert_eq!(frame.pixel(Point::new(15, 15)), Some(Rgb565::BLUE));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn translucent(&mut self, opacity: u8) -> Translucent<'_, 'a, C, S> {
+        Translucent {
+            frame: self,
+            opacity,
+        }
+    }
+}
+
+/// A [`Framebuffer`] that blends everything drawn into it over its pixels: see
+/// [`Framebuffer::translucent`].
+///
+/// Solid fills over a uniform background blend once per run of equal pixels, not once per
+/// pixel.
+#[derive(Debug)]
+pub struct Translucent<'f, 'a, C, S = C> {
+    frame: &'f mut Framebuffer<'a, C, S>,
+    opacity: u8,
+}
+
+impl<C, S> Translucent<'_, '_, C, S> {
+    /// The opacity everything is drawn with.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::pixelcolor::Gray8;
+    /// use trirast::Framebuffer;
+    ///
+    /// let mut pixels = [Gray8::new(0); 4];
+    /// let mut frame = Framebuffer::new(&mut pixels, 2, 2)?;
+    /// assert_eq!(frame.translucent(90).opacity(), 90);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[must_use]
+    pub fn opacity(&self) -> u8 {
+        self.opacity
+    }
+}
+
+impl<C, S> Dimensions for Translucent<'_, '_, C, S> {
+    fn bounding_box(&self) -> Rectangle {
+        self.frame.bounding_box()
+    }
+}
+
+impl<C, S> DrawTarget for Translucent<'_, '_, C, S>
+where
+    C: ChannelColor,
+    S: StoredPixel<C>,
+{
+    type Color = C;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<C>>,
+    {
+        for Pixel(point, color) in pixels {
+            if let Some(pixel) = self.frame.pixel_mut(point) {
+                *pixel = S::store(blend(color, pixel.load(), self.opacity));
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        let opacity = self.opacity;
+        if area.size.height == 1 {
+            // One row inside, the shading styles' case.
+            let (y, x) = (area.top_left.y, area.top_left.x);
+            if let Some(row) = self.frame.row_mut(y, x, area.size.width) {
+                for (pixel, color) in row.iter_mut().zip(colors) {
+                    *pixel = S::store(blend(color, pixel.load(), opacity));
+                }
+                return Ok(());
+            }
+        }
+        let mut colors = colors.into_iter();
+        // Index in `area` of the next colour `colors` yields; `None` once it has ended.
+        let mut next = Some(0u64);
+        self.frame.update_area(area, |index, pixel| {
+            let Some(expected) = next else { return };
+            // Colours of pixels outside the image are skipped.
+            let color = match index - expected {
+                0 => colors.next(),
+                skipped => colors.nth(usize::try_from(skipped).unwrap_or(usize::MAX)),
+            };
+            match color {
+                Some(color) => {
+                    *pixel = S::store(blend(color, pixel.load(), opacity));
+                    next = Some(index + 1);
+                }
+                None => next = None,
+            }
+        });
+        Ok(())
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
+        let opacity = self.opacity;
+        // Pixels often repeat (a background, an earlier fill): blend each new one once.
+        let mut last: Option<(C, S)> = None;
+        self.frame.update_area(area, |_, pixel| {
+            let under = pixel.load();
+            let blended = match last {
+                Some((seen, result)) if seen == under => result,
+                _ => {
+                    let result = S::store(blend(color, under, opacity));
+                    last = Some((under, result));
+                    result
+                }
+            };
+            *pixel = blended;
+        });
+        Ok(())
+    }
+}
+
+/// Any target drawn translucently over a background colour the caller knows: each colour is
+/// blended over `background` at `opacity` (by [`blend`]) and drawn through. For targets that
+/// cannot be read, such as display drivers: anti-aliased or translucent shapes straight to
+/// the display, provided they lie over that background.
+///
+/// Solid fills stay solid fills (one blend per call), so a display driver still gets one
+/// window per span.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Rgb565, prelude::*};
+/// use trirast::{target::{blend, OverBackground}, FlatStyle, Triangle};
+///
+/// let mut display = MockDisplay::<Rgb565>::new();
+/// let mut translucent = OverBackground::new(&mut display, Rgb565::BLACK, 64);
+/// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+/// t.into_styled(FlatStyle::new(Rgb565::WHITE)).draw(&mut translucent).unwrap();
+/// assert_eq!(display.get_pixel(Point::new(1, 1)), Some(blend(Rgb565::WHITE, Rgb565::BLACK, 64)));
+/// ```
+#[derive(Debug)]
+pub struct OverBackground<'d, D: DrawTarget> {
+    target: &'d mut D,
+    background: D::Color,
+    opacity: u8,
+}
+
+impl<'d, D> OverBackground<'d, D>
+where
+    D: DrawTarget,
+    D::Color: ChannelColor,
+{
+    /// Draws into `target` blended over `background` at `opacity` (255: opaque).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::{Gray8, GrayColor}};
+    /// use trirast::target::OverBackground;
+    ///
+    /// let mut display = MockDisplay::<Gray8>::new();
+    /// let over = OverBackground::new(&mut display, Gray8::BLACK, 200);
+    /// assert_eq!(over.opacity(), 200);
+    /// ```
+    pub fn new(target: &'d mut D, background: D::Color, opacity: u8) -> Self {
+        Self {
+            target,
+            background,
+            opacity,
+        }
+    }
+
+    /// The opacity everything is drawn with.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor};
+    /// use trirast::target::OverBackground;
+    ///
+    /// let mut display = MockDisplay::<BinaryColor>::new();
+    /// assert_eq!(OverBackground::new(&mut display, BinaryColor::Off, 7).opacity(), 7);
+    /// ```
+    #[must_use]
+    pub fn opacity(&self) -> u8 {
+        self.opacity
+    }
+
+    #[inline(always)]
+    fn over(&self, color: D::Color) -> D::Color {
+        blend(color, self.background, self.opacity)
+    }
+}
+
+impl<D: DrawTarget> Dimensions for OverBackground<'_, D> {
+    fn bounding_box(&self) -> Rectangle {
+        self.target.bounding_box()
+    }
+}
+
+impl<D> DrawTarget for OverBackground<'_, D>
+where
+    D: DrawTarget,
+    D::Color: ChannelColor,
+{
+    type Color = D::Color;
+    type Error = D::Error;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<D::Color>>,
+    {
+        let (background, opacity) = (self.background, self.opacity);
+        self.target.draw_iter(
+            pixels
+                .into_iter()
+                .map(|Pixel(p, c)| Pixel(p, blend(c, background, opacity))),
+        )
+    }
+
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = D::Color>,
+    {
+        let (background, opacity) = (self.background, self.opacity);
+        self.target.fill_contiguous(
+            area,
+            colors.into_iter().map(|c| blend(c, background, opacity)),
+        )
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: D::Color) -> Result<(), Self::Error> {
+        let color = self.over(color);
+        self.target.fill_solid(area, color)
+    }
+
+    fn clear(&mut self, color: D::Color) -> Result<(), Self::Error> {
+        let color = self.over(color);
+        self.target.clear(color)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use embedded_graphics::pixelcolor::{Gray4, Gray8, Rgb565, Rgb888};
+
+    /// Every channel within half a level of the exact blend, for every pair of channel values
+    /// and every opacity.
+    fn check<C: ChannelColor + core::fmt::Debug>(values: &[C]) {
+        for &s in values {
+            for &d in values {
+                for opacity in 0..=255u8 {
+                    let got = blend(s, d, opacity);
+                    let (a, b) = (i64::from(opacity), 255 - i64::from(opacity));
+                    let channels = s.channels();
+                    for (k, &c) in got.channels().as_ref().iter().enumerate() {
+                        let exact2 = 2
+                            * (i64::from(channels.as_ref()[k]) * a
+                                + i64::from(d.channels().as_ref()[k]) * b);
+                        // |c - exact| <= 1/2  <=>  |510 c - 2 * numerator| <= 255
+                        assert!(
+                            (510 * i64::from(c) - exact2).abs() <= 255,
+                            "{s:?} over {d:?} at {opacity}"
+                        );
+                    }
+                    if opacity == 255 {
+                        assert_eq!(got, s);
+                    }
+                    if opacity == 0 {
+                        assert_eq!(got, d);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn blends_are_within_half_a_level() {
+        let gray8: [Gray8; 256] = core::array::from_fn(|i| Gray8::new(i as u8));
+        let gray4: [Gray4; 16] = core::array::from_fn(|i| Gray4::new(i as u8));
+        let rgb565: [Rgb565; 110] = core::array::from_fn(|i| {
+            let (r, g) = ((i / 10 * 3) as u8, (i % 10 * 7) as u8);
+            Rgb565::new(r, g, 31 - r)
+        });
+        let rgb888: [Rgb888; 16] = core::array::from_fn(|i| {
+            let v = (i * 17) as u8;
+            Rgb888::new(v, 255 - v, v / 3)
+        });
+        check(&gray8);
+        check(&gray4);
+        check(&rgb565);
+        check(&rgb888);
+    }
+}
