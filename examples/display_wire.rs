@@ -1,0 +1,135 @@
+//! What reaches the wire: the benchmark's 200-triangle scene drawn to an ST7789 240x240 display
+//! through the real `mipidsi` driver over a recording SPI bus, three ways, and each recording
+//! decoded back into an image (as the display controller would apply it) and written as PNG.
+//!
+//! ```text
+//! cargo run --release --example display_wire            # table, and target/display-wire/*.png
+//! ```
+//!
+//! - **direct**: every span straight to the driver, which opens a window (`CASET`, `RASET`,
+//!   `RAMWR`) for each: no frame memory, many small transactions.
+//! - **framebuffer**: the frame drawn into trirast's `Framebuffer`, then sent as one window.
+//! - **bands**: `band::Bands`, 16 rows at a time, one window per band.
+
+#[path = "common/scenes.rs"]
+mod scenes;
+#[path = "common/wire.rs"]
+mod wire;
+
+use std::{cell::RefCell, path::PathBuf, rc::Rc};
+
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
+use mipidsi::{interface::SpiInterface, models::ST7789, Builder};
+use trirast::{
+    band::{Bands, Scene, SceneStyle},
+    Framebuffer, GouraudStyle, Triangle,
+};
+use wire::{Controller, DcPin, NoDelay, RecordingSpi, Wire, CASET};
+
+/// The panel: 240 x 240 pixels.
+const SIDE: u32 = 240;
+/// Bytes of the driver's pixel buffer (`SpiInterface`): one SPI write per 512 bytes of pixels.
+const DRIVER_BUFFER: usize = 512;
+/// Rows per band.
+const BAND_ROWS: u32 = 16;
+/// The RP2040's fastest SPI clock.
+const SPI_HZ: u64 = 62_500_000;
+
+fn main() {
+    let mut triangles = Vec::new();
+    scenes::Scene::Scene200.for_each(|t| triangles.push(t));
+    let screen = Rectangle::new(Point::zero(), Size::new(SIDE, SIDE));
+    let dir = PathBuf::from("target/display-wire");
+    std::fs::create_dir_all(&dir).expect("cannot create target/display-wire");
+    println!(
+        "{} Gouraud triangles (scene200) to an ST7789 {SIDE}x{SIDE} through mipidsi 0.10, {DRIVER_BUFFER}-byte driver buffer, SPI at {:.1} MHz",
+        triangles.len(),
+        SPI_HZ as f64 / 1e6
+    );
+    println!("| Way | pixel memory (bytes) | bytes on the wire | SPI transactions | windows | bits on the wire at 62.5 MHz |");
+    println!("| --- | --- | --- | --- | --- | --- |");
+    let ways: [(&str, u64); 3] = [
+        ("direct", 0),
+        ("framebuffer", u64::from(SIDE * SIDE * 2)),
+        ("bands", u64::from(SIDE * BAND_ROWS * 2)),
+    ];
+    for (name, memory) in ways {
+        let recording = Rc::new(RefCell::new(Wire::default()));
+        let mut buffer = [0u8; DRIVER_BUFFER];
+        let interface = SpiInterface::new(
+            RecordingSpi(recording.clone()),
+            DcPin(recording.clone()),
+            &mut buffer,
+        );
+        let mut display = Builder::new(ST7789, interface)
+            .display_size(SIDE as u16, SIDE as u16)
+            .init(&mut NoDelay)
+            .expect("the recording bus does not fail");
+        // Count the frame only, not the initialisation.
+        *recording.borrow_mut() = Wire::default();
+        match name {
+            "direct" => {
+                for t in &triangles {
+                    let [a, b, c] = t.vertices;
+                    Triangle::new(a, b, c)
+                        .into_styled(GouraudStyle::new(t.vertex_colors))
+                        .draw(&mut display)
+                        .unwrap();
+                }
+            }
+            "framebuffer" => {
+                let mut pixels = vec![Rgb565::BLACK; (SIDE * SIDE) as usize];
+                let mut frame = Framebuffer::new(&mut pixels, SIDE, SIDE).unwrap();
+                for t in &triangles {
+                    let [a, b, c] = t.vertices;
+                    Triangle::new(a, b, c)
+                        .into_styled(GouraudStyle::new(t.vertex_colors))
+                        .draw(&mut frame)
+                        .unwrap();
+                }
+                display
+                    .fill_contiguous(&screen, pixels.iter().copied())
+                    .unwrap();
+            }
+            _ => {
+                let mut scene: Box<Scene<Rgb565, 256>> = Box::new(Scene::new(screen));
+                for t in &triangles {
+                    let [a, b, c] = t.vertices;
+                    let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
+                    scene.push(Triangle::new(a, b, c), style).unwrap();
+                }
+                let mut band = vec![Rgb565::BLACK; (SIDE * BAND_ROWS) as usize];
+                Bands::new(&mut band, SIDE, BAND_ROWS)
+                    .unwrap()
+                    .render(&scene, Rgb565::BLACK, &mut display)
+                    .unwrap();
+            }
+        }
+        let wire = recording.borrow();
+        let bytes = wire.bytes();
+        println!(
+            "| {name} | {memory} | {bytes} | {} | {} | {:.1} ms |",
+            wire.transactions,
+            wire.commands(CASET),
+            bytes as f64 * 8.0 / SPI_HZ as f64 * 1e3
+        );
+        // What the panel shows, decoded from the bytes alone.
+        let mut panel = Controller::new(SIDE as u16, SIDE as u16, Rgb565::BLACK);
+        panel.play(&wire);
+        let mut image = SimulatorDisplay::<Rgb565>::new(Size::new(SIDE, SIDE));
+        for (i, c) in panel.pixels.iter().enumerate() {
+            let p = Point::new((i as u32 % SIDE) as i32, (i as u32 / SIDE) as i32);
+            Pixel(p, *c).draw(&mut image).unwrap();
+        }
+        let path = dir.join(format!("{name}.png"));
+        image
+            .to_rgb_output_image(&OutputSettingsBuilder::new().build())
+            .save_png(&path)
+            .expect("cannot write the PNG");
+    }
+    println!(
+        "decoded images: {}/{{direct,framebuffer,bands}}.png",
+        dir.display()
+    );
+}

@@ -1,0 +1,184 @@
+//! What reaches an SPI display through the real `mipidsi` driver, decoded as the controller
+//! applies it: every way of drawing (spans straight to the driver, a framebuffer sent as one
+//! window, bands of any height) shows the full-frame render bit for bit; each sends the windows
+//! it should; a failing bus stops drawing with the bus's error.
+
+#[path = "../examples/common/scenes.rs"]
+mod scenes;
+#[path = "../examples/common/wire.rs"]
+mod wire;
+
+use std::{cell::RefCell, rc::Rc};
+
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use mipidsi::{
+    interface::{SpiError, SpiInterface},
+    models::ST7789,
+    Builder, Display, NoResetPin,
+};
+use trirast::{
+    band::{BandError, Bands, Scene, SceneStyle},
+    coverage::for_each_span,
+    FillRule, Framebuffer, GouraudStyle, Triangle,
+};
+use wire::{BusFailed, Controller, DcPin, NoDelay, RecordingSpi, Wire, CASET, RAMWR, RASET};
+
+const SIDE: u32 = 240;
+
+type Panel<'b> = Display<SpiInterface<'b, RecordingSpi, DcPin>, ST7789, NoResetPin>;
+
+/// An initialised ST7789 240 x 240 over a fresh recording, which then holds nothing.
+fn panel(buffer: &mut [u8]) -> (Panel<'_>, Rc<RefCell<Wire>>) {
+    let recording = Rc::new(RefCell::new(Wire::default()));
+    let interface = SpiInterface::new(
+        RecordingSpi(recording.clone()),
+        DcPin(recording.clone()),
+        buffer,
+    );
+    let display = Builder::new(ST7789, interface)
+        .display_size(SIDE as u16, SIDE as u16)
+        .init(&mut NoDelay)
+        .unwrap();
+    *recording.borrow_mut() = Wire::default();
+    (display, recording)
+}
+
+fn triangles() -> Vec<Triangle> {
+    let mut out = Vec::new();
+    scenes::Scene::Scene200.for_each(|t| {
+        let [a, b, c] = t.vertices;
+        out.push(Triangle::new(a, b, c));
+    });
+    out
+}
+
+fn styles() -> Vec<GouraudStyle<Rgb565>> {
+    let mut out = Vec::new();
+    scenes::Scene::Scene200.for_each(|t| out.push(GouraudStyle::new(t.vertex_colors)));
+    out
+}
+
+fn screen() -> Rectangle {
+    Rectangle::new(Point::zero(), Size::new(SIDE, SIDE))
+}
+
+/// The reference: the scene drawn into a framebuffer.
+fn full_frame() -> Vec<Rgb565> {
+    let mut pixels = vec![Rgb565::BLACK; (SIDE * SIDE) as usize];
+    let mut frame = Framebuffer::new(&mut pixels, SIDE, SIDE).unwrap();
+    for (t, s) in triangles().iter().zip(styles()) {
+        t.into_styled(s).draw(&mut frame).unwrap();
+    }
+    pixels
+}
+
+/// What the panel shows after `wire`, over black.
+fn decoded(wire: &Wire) -> Vec<Rgb565> {
+    let mut controller = Controller::new(SIDE as u16, SIDE as u16, Rgb565::BLACK);
+    controller.play(wire);
+    assert_eq!(controller.outside, 0, "pixels written outside the panel");
+    controller.pixels
+}
+
+fn banded(
+    rows: u32,
+    display: &mut Panel<'_>,
+) -> Result<(), BandError<SpiError<BusFailed, core::convert::Infallible>>> {
+    let mut scene: Box<Scene<Rgb565, 256>> = Box::new(Scene::new(screen()));
+    for (t, s) in triangles().into_iter().zip(styles()) {
+        scene.push(t, SceneStyle::Gouraud(s)).unwrap();
+    }
+    let mut band = vec![Rgb565::BLACK; (SIDE * rows) as usize];
+    Bands::new(&mut band, SIDE, rows)
+        .unwrap()
+        .render(&scene, Rgb565::BLACK, display)
+}
+
+#[test]
+fn spans_straight_to_the_driver_show_the_frame() {
+    let mut buffer = [0u8; 512];
+    let (mut display, recording) = panel(&mut buffer);
+    for (t, s) in triangles().iter().zip(styles()) {
+        t.into_styled(s).draw(&mut display).unwrap();
+    }
+    let wire = recording.borrow();
+    assert!(decoded(&wire) == full_frame());
+    // One window per span: as many as the spans inside the screen.
+    let mut spans = 0;
+    for t in triangles() {
+        for_each_span(&t, FillRule::TopLeft, &screen(), |_| {
+            spans += 1;
+            Ok::<(), ()>(())
+        })
+        .unwrap();
+    }
+    for command in [CASET, RASET, RAMWR] {
+        assert_eq!(wire.commands(command), spans);
+    }
+}
+
+#[test]
+fn a_framebuffer_goes_as_one_window() {
+    let mut buffer = [0u8; 512];
+    let (mut display, recording) = panel(&mut buffer);
+    let pixels = full_frame();
+    display
+        .fill_contiguous(&screen(), pixels.iter().copied())
+        .unwrap();
+    let wire = recording.borrow();
+    assert!(decoded(&wire) == pixels);
+    assert_eq!(
+        (
+            wire.commands(CASET),
+            wire.commands(RASET),
+            wire.commands(RAMWR)
+        ),
+        (1, 1, 1)
+    );
+    // Eleven command and address bytes, then two bytes per pixel.
+    assert_eq!(wire.bytes(), 11 + u64::from(SIDE * SIDE * 2));
+}
+
+#[test]
+fn bands_of_any_height_show_the_frame_one_window_each() {
+    let want = full_frame();
+    for rows in [1, 8, 16, 7, SIDE] {
+        let mut buffer = [0u8; 512];
+        let (mut display, recording) = panel(&mut buffer);
+        banded(rows, &mut display).unwrap();
+        let wire = recording.borrow();
+        assert!(decoded(&wire) == want, "band height {rows}");
+        let bands = u64::from(SIDE.div_ceil(rows));
+        for command in [CASET, RASET, RAMWR] {
+            assert_eq!(wire.commands(command), bands, "band height {rows}");
+        }
+        assert_eq!(wire.bytes(), 11 * bands + u64::from(SIDE * SIDE * 2));
+    }
+}
+
+#[test]
+fn a_failing_bus_stops_drawing_with_its_error() {
+    for allowed in [0, 1, 5, 40, 300] {
+        // Bands: the first failing write ends the render.
+        let mut buffer = [0u8; 512];
+        let (mut display, recording) = panel(&mut buffer);
+        recording.borrow_mut().fail_after = Some(allowed);
+        let result = banded(16, &mut display);
+        assert!(
+            matches!(result, Err(BandError::Target(SpiError::Spi(BusFailed)))),
+            "{result:?}"
+        );
+        assert_eq!(recording.borrow().transactions, allowed);
+
+        // Spans straight to the driver: the triangle's draw returns the error at once.
+        let mut buffer = [0u8; 512];
+        let (mut display, recording) = panel(&mut buffer);
+        recording.borrow_mut().fail_after = Some(allowed);
+        let error = triangles()
+            .iter()
+            .zip(styles())
+            .find_map(|(t, s)| t.into_styled(s).draw(&mut display).err());
+        assert!(matches!(error, Some(SpiError::Spi(BusFailed))));
+        assert_eq!(recording.borrow().transactions, allowed);
+    }
+}
