@@ -252,14 +252,30 @@ use scale_wide as scale;
 /// The gradient numerators `[da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]` of a plane with
 /// value deltas `da1`, `da2` along edges `e = [ex1, ey1, ex2, ey2]` (each below 2^15).
 ///
-/// Value deltas below 2^32 (every attribute the crate interpolates) are split into 16-bit
-/// halves, so that every product is a 32-bit multiply: on Cortex-M0 a 64-bit one is a library
-/// call, twelve per Gouraud triangle. Bit for bit the 64-bit result.
+/// On cores without a 64-bit multiply (as [`scale_split`]), value deltas below 2^32 (every
+/// attribute the crate interpolates) are split into 16-bit halves, so that every product is a
+/// 32-bit multiply: on Cortex-M0 a 64-bit one is a library call, twelve per Gouraud triangle.
+/// Bit for bit the 64-bit result.
 #[inline(always)]
 fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
+    // Cores with a 64-bit multiply (see `scale_wide`) keep the plain products.
+    if cfg!(not(target_has_atomic = "32"))
+        && da1.unsigned_abs() < 1 << 32
+        && da2.unsigned_abs() < 1 << 32
+    {
+        numerators_split(da1, da2, e)
+    } else {
+        let [ex1, ey1, ex2, ey2] = e.map(i64::from);
+        [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
+    }
+}
+
+/// [`numerators`] for value deltas below 2^32, in 32-bit multiplies.
+#[inline(always)]
+fn numerators_split(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
     let [ex1, ey1, ex2, ey2] = e;
     let cross = |a: i64, b: i32, c: i64, d: i32| -> i64 {
-        // a = high * 2^16 + low, with |high| < 2^16 and 0 <= low < 2^16: each product below
+        // a = high * 2^16 + low, with |high| <= 2^16 and 0 <= low < 2^16: each product below
         // 2^31 in magnitude.
         let (a_high, a_low) = ((a >> 16) as i32, (a & 0xFFFF) as i32);
         let (c_high, c_low) = ((c >> 16) as i32, (c & 0xFFFF) as i32);
@@ -267,12 +283,7 @@ fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
         let low = i64::from(a_low * b) - i64::from(c_low * d);
         (high << 16) + low
     };
-    if da1.unsigned_abs() < 1 << 32 && da2.unsigned_abs() < 1 << 32 {
-        [cross(da1, ey2, da2, ey1), cross(da2, ex1, da1, ex2)]
-    } else {
-        let [ex1, ey1, ex2, ey2] = e.map(i64::from);
-        [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
-    }
+    [cross(da1, ey2, da2, ey1), cross(da2, ex1, da1, ex2)]
 }
 
 /// [`Planes`] that remember their last evaluation and reach the next one by additions when it
@@ -623,6 +634,9 @@ mod tests {
                     let [ex1, ey1, ex2, ey2] = e.map(i64::from);
                     let want = [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2];
                     assert_eq!(numerators(da1, da2, e), want, "{da1} {da2} {e:?}");
+                    if da1.unsigned_abs() < 1 << 32 && da2.unsigned_abs() < 1 << 32 {
+                        assert_eq!(numerators_split(da1, da2, e), want, "{da1} {da2} {e:?}");
+                    }
                 }
             }
         }
