@@ -3,13 +3,17 @@
 //! decoded back into an image (as the display controller would apply it) and written as PNG.
 //!
 //! ```text
-//! cargo run --release --example display_wire            # table, and target/display-wire/*.png
+//! cargo run --release --example display_wire     # tables, and target/display-wire/*.png
 //! ```
 //!
 //! - **direct**: every span straight to the driver, which opens a window (`CASET`, `RASET`,
 //!   `RAMWR`) for each: no frame memory, many small transactions.
 //! - **framebuffer**: the frame drawn into trirast's `Framebuffer`, then sent as one window.
 //! - **bands**: `band::Bands`, 16 rows at a time, one window per band.
+//!
+//! Then a dithered Gouraud scene to an SSD1306 128x64 OLED through the real `ssd1306` driver in
+//! buffered graphics mode over a recording I2C bus, decoded from the display memory the bytes
+//! fill.
 
 #[path = "common/scenes.rs"]
 mod scenes;
@@ -18,14 +22,19 @@ mod wire;
 
 use std::{cell::RefCell, path::PathBuf, rc::Rc};
 
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use embedded_graphics::{
+    pixelcolor::{BinaryColor, Rgb565},
+    prelude::*,
+    primitives::Rectangle,
+};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use mipidsi::{interface::SpiInterface, models::ST7789, Builder};
+use ssd1306::{prelude::*, I2CDisplayInterface, Ssd1306};
 use trirast::{
     band::{Bands, Scene, SceneStyle},
     Framebuffer, GouraudStyle, Triangle,
 };
-use wire::{Controller, DcPin, NoDelay, RecordingSpi, Wire, CASET};
+use wire::{Controller, DcPin, Gddram, NoDelay, RecordingI2c, RecordingSpi, Wire, CASET};
 
 /// The panel: 240 x 240 pixels.
 const SIDE: u32 = 240;
@@ -132,4 +141,45 @@ fn main() {
         "decoded images: {}/{{direct,framebuffer,bands}}.png",
         dir.display()
     );
+    oled(&dir);
+}
+
+/// The OLED: one frame in the driver's buffered graphics mode (a 1 KB buffer), flushed.
+fn oled(dir: &std::path::Path) {
+    let recording = Rc::new(RefCell::new(Wire::default()));
+    let interface = I2CDisplayInterface::new(RecordingI2c(recording.clone()));
+    let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
+        .into_buffered_graphics_mode();
+    display.init().expect("the recording bus does not fail");
+    *recording.borrow_mut() = Wire::default();
+    for (triangle, style) in wire::oled_scene() {
+        triangle.into_styled(style).draw(&mut display).unwrap();
+    }
+    display.flush().unwrap();
+    let wire = recording.borrow();
+    // Each I2C transaction is a start, the address byte, the payload, a stop: 9 bits a byte.
+    let bits = (wire.bytes() + wire.transactions) * 9;
+    println!(
+        "SSD1306 128x64 over I2C (ssd1306 0.10, buffered graphics mode): {} bytes in {} transactions a frame; {:.1} ms at 400 kHz, {:.1} ms at 1 MHz",
+        wire.bytes(),
+        wire.transactions,
+        bits as f64 / 400e3 * 1e3,
+        bits as f64 / 1e6 * 1e3
+    );
+    let mut memory = Gddram::new(128);
+    memory.play(&wire);
+    let mut image = SimulatorDisplay::<BinaryColor>::new(Size::new(128, 64));
+    for y in 0..64u8 {
+        for x in 0..128u8 {
+            Pixel(Point::new(x.into(), y.into()), memory.pixel(x, y))
+                .draw(&mut image)
+                .unwrap();
+        }
+    }
+    let path = dir.join("oled.png");
+    image
+        .to_rgb_output_image(&OutputSettingsBuilder::new().scale(2).build())
+        .save_png(&path)
+        .expect("cannot write the PNG");
+    println!("decoded OLED image: {}", path.display());
 }

@@ -1,7 +1,8 @@
-//! What reaches an SPI display through the real `mipidsi` driver, decoded as the controller
-//! applies it: every way of drawing (spans straight to the driver, a framebuffer sent as one
-//! window, bands of any height) shows the full-frame render bit for bit; each sends the windows
-//! it should; a failing bus stops drawing with the bus's error.
+//! What reaches a display through real drivers, decoded as the controller applies it: through
+//! `mipidsi` over SPI, every way of drawing (spans straight to the driver, a framebuffer sent as
+//! one window, bands of any height) shows the full-frame render bit for bit, each sends the
+//! windows it should, and a failing bus stops drawing with the bus's error; through `ssd1306`
+//! over I2C, a dithered frame arrives whole in one flush.
 
 #[path = "../examples/common/scenes.rs"]
 mod scenes;
@@ -10,18 +11,26 @@ mod wire;
 
 use std::{cell::RefCell, rc::Rc};
 
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use embedded_graphics::{
+    pixelcolor::{BinaryColor, Rgb565},
+    prelude::*,
+    primitives::Rectangle,
+};
 use mipidsi::{
     interface::{SpiError, SpiInterface},
     models::ST7789,
     Builder, Display, NoResetPin,
 };
+use ssd1306::{prelude::*, I2CDisplayInterface, Ssd1306};
 use trirast::{
     band::{BandError, Bands, Scene, SceneStyle},
     coverage::for_each_span,
     FillRule, Framebuffer, GouraudStyle, Triangle,
 };
-use wire::{BusFailed, Controller, DcPin, NoDelay, RecordingSpi, Wire, CASET, RAMWR, RASET};
+use wire::{
+    BusFailed, Controller, DcPin, Gddram, NoDelay, RecordingI2c, RecordingSpi, Wire, CASET, RAMWR,
+    RASET,
+};
 
 const SIDE: u32 = 240;
 
@@ -181,4 +190,34 @@ fn a_failing_bus_stops_drawing_with_its_error() {
         assert!(matches!(error, Some(SpiError::Spi(BusFailed))));
         assert_eq!(recording.borrow().transactions, allowed);
     }
+}
+
+#[test]
+fn an_oled_frame_arrives_whole_in_one_flush() {
+    let recording = Rc::new(RefCell::new(Wire::default()));
+    let interface = I2CDisplayInterface::new(RecordingI2c(recording.clone()));
+    let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
+        .into_buffered_graphics_mode();
+    display.init().unwrap();
+    *recording.borrow_mut() = Wire::default();
+    let mut pixels = [BinaryColor::Off; 128 * 64];
+    let mut frame = Framebuffer::new(&mut pixels, 128, 64).unwrap();
+    for (triangle, style) in wire::oled_scene() {
+        triangle.into_styled(style).draw(&mut display).unwrap();
+        triangle.into_styled(style).draw(&mut frame).unwrap();
+    }
+    display.flush().unwrap();
+    let wire = recording.borrow();
+    let mut memory = Gddram::new(128);
+    memory.play(&wire);
+    for y in 0..64u8 {
+        for x in 0..128u8 {
+            let want = frame.pixel(Point::new(x.into(), y.into())).unwrap();
+            assert_eq!(memory.pixel(x, y), want, "({x}, {y})");
+        }
+    }
+    // The whole memory (1,024 bytes) in 16-byte writes behind a control byte, after the
+    // column and page windows (a control byte and three command bytes each).
+    assert_eq!(wire.bytes(), 64 * 17 + 2 * 4);
+    assert_eq!(wire.transactions, 66);
 }

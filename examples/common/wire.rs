@@ -1,15 +1,17 @@
-//! What reaches an SPI display: a recording SPI bus and data/command pin for the real
-//! `mipidsi` driver, and a decoder that plays the recorded bytes into a model of the display
-//! controller's memory (column and page windows, memory writes), as an ST7789 or ILI9341 would.
+//! What reaches a display: a recording SPI bus and data/command pin for the real `mipidsi`
+//! driver and a recording I2C bus for the real `ssd1306` driver, and decoders that play the
+//! recorded bytes into models of the controllers' memories: an ST7789's (column and page
+//! windows, memory writes of `Rgb565`) and an SSD1306's (1-bit pages, horizontal addressing).
 //! Shared by `examples/display_wire.rs` and `tests/display_wire.rs`.
 #![allow(dead_code)]
 
 use std::{cell::RefCell, convert::Infallible, rc::Rc};
 
-use embedded_graphics::pixelcolor::{raw::RawU16, Rgb565};
+use embedded_graphics::pixelcolor::{raw::RawU16, BinaryColor, Rgb565};
 use embedded_hal::{
     delay::DelayNs,
     digital::{ErrorType as PinErrorType, OutputPin},
+    i2c::{self, I2c},
     spi::{ErrorKind, ErrorType, Operation, SpiDevice},
 };
 
@@ -191,4 +193,167 @@ impl Controller {
             _ => {}
         }
     }
+}
+
+/// An I2C bus that records every write (the first byte of each is the SSD1306's control byte:
+/// `0x00` before a command, `0x40` before data).
+pub struct RecordingI2c(pub Recording);
+
+impl i2c::Error for BusFailed {
+    fn kind(&self) -> i2c::ErrorKind {
+        i2c::ErrorKind::Other
+    }
+}
+
+impl i2c::ErrorType for RecordingI2c {
+    type Error = BusFailed;
+}
+
+impl I2c for RecordingI2c {
+    fn transaction(
+        &mut self,
+        _address: u8,
+        operations: &mut [i2c::Operation<'_>],
+    ) -> Result<(), BusFailed> {
+        let mut wire = self.0.borrow_mut();
+        if let Some(left) = wire.fail_after.as_mut() {
+            if *left == 0 {
+                return Err(BusFailed);
+            }
+            *left -= 1;
+        }
+        wire.transactions += 1;
+        for op in operations {
+            if let i2c::Operation::Write(bytes) = op {
+                let data = bytes.first() == Some(&0x40);
+                wire.writes.push((data, bytes.to_vec()));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// An SSD1306's display memory (`width` columns, 8 pages of 8 rows, one bit per pixel, the top
+/// row in bit 0), played from a recording in horizontal addressing mode: `0x21` and `0x22` set
+/// the column and page windows and move the pointer to their start, each data byte fills one
+/// column of one page, left to right, then the next page. The segment and COM remapping the
+/// driver sets only orient this memory on the glass; it is decoded as the driver's image.
+pub struct Gddram {
+    pub width: u8,
+    pub pages: Vec<u8>,
+    columns: (u8, u8),
+    page_window: (u8, u8),
+    cursor: (u8, u8),
+}
+
+impl Gddram {
+    /// A blank `width` x 64 memory.
+    pub fn new(width: u8) -> Self {
+        Self {
+            width,
+            pages: vec![0; usize::from(width) * 8],
+            columns: (0, width - 1),
+            page_window: (0, 7),
+            cursor: (0, 0),
+        }
+    }
+
+    /// Plays `wire` (writes of an I2C recording) into the memory.
+    pub fn play(&mut self, wire: &Wire) {
+        for (data, bytes) in &wire.writes {
+            let payload = &bytes[1..];
+            if *data {
+                for &b in payload {
+                    self.write(b);
+                }
+            } else {
+                // Each command write holds one command and its arguments.
+                match payload {
+                    [0x21, start, end] => {
+                        self.columns = (*start, *end);
+                        self.cursor.0 = *start;
+                    }
+                    [0x22, start, end] => {
+                        self.page_window = (start & 7, end & 7);
+                        self.cursor.1 = start & 7;
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+
+    fn write(&mut self, byte: u8) {
+        let (column, page) = self.cursor;
+        if column < self.width {
+            self.pages[usize::from(page) * usize::from(self.width) + usize::from(column)] = byte;
+        }
+        self.cursor = if column >= self.columns.1 {
+            let page = if page >= self.page_window.1 {
+                self.page_window.0
+            } else {
+                page + 1
+            };
+            (self.columns.0, page)
+        } else {
+            (column + 1, page)
+        };
+    }
+
+    /// The pixel at column `x`, row `y`.
+    pub fn pixel(&self, x: u8, y: u8) -> BinaryColor {
+        let byte = self.pages[usize::from(y / 8) * usize::from(self.width) + usize::from(x)];
+        if byte >> (y % 8) & 1 == 1 {
+            BinaryColor::On
+        } else {
+            BinaryColor::Off
+        }
+    }
+}
+
+/// The OLED scene: a dithered fade across a 128 x 64 panel under a fan of dithered Gouraud
+/// triangles (a gauge), as `(triangle, style)` pairs in drawing order.
+pub fn oled_scene() -> Vec<(trirast::Triangle, trirast::GouraudStyle<BinaryColor>)> {
+    use embedded_graphics::prelude::Point;
+    use trirast::{GouraudStyle, Triangle};
+    let (on, off) = (BinaryColor::On, BinaryColor::Off);
+    let p = Point::new;
+    let mut scene = vec![
+        (
+            Triangle::new(p(0, 0), p(128, 0), p(0, 64)),
+            GouraudStyle::new([off, off, on]).with_dither(true),
+        ),
+        (
+            Triangle::new(p(128, 0), p(128, 64), p(0, 64)),
+            GouraudStyle::new([off, on, on]).with_dither(true),
+        ),
+    ];
+    // Rim points of a half circle of radius 30 around (64, 44), from a table of integer sines.
+    let rim = [
+        (-30, 0),
+        (-29, -9),
+        (-24, -18),
+        (-18, -24),
+        (-9, -29),
+        (0, -30),
+        (9, -29),
+        (18, -24),
+        (24, -18),
+        (29, -9),
+        (30, 0),
+    ];
+    let center = p(64, 44);
+    for (k, pair) in rim.windows(2).enumerate() {
+        let (a, b) = (pair[0], pair[1]);
+        let colors = if k % 2 == 0 {
+            [on, off, on]
+        } else {
+            [off, on, off]
+        };
+        scene.push((
+            Triangle::new(center, center + p(a.0, a.1), center + p(b.0, b.1)),
+            GouraudStyle::new(colors).with_dither(true),
+        ));
+    }
+    scene
 }
