@@ -93,7 +93,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         // Gradient = numerator / area, to 2^-SETUP: numerator * 2^(SETUP - 16) (raw values
         // carry 2^-16) times 2^62 / |area|, shifted down by 62 - (SETUP - 16). The reciprocal
         // is below 2^62 and the products below 2^111.
-        let reciprocal = (1u64 << 62) / area.unsigned_abs();
+        let reciprocal = reciprocal_2_62(area.unsigned_abs());
         let shift = 62 - (SETUP - STEP_BITS);
         let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
         let mut planes = Self::empty(origin);
@@ -176,6 +176,39 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     pub(crate) fn at(&self, x: i32, y: i32) -> [u32; N] {
         Self::to_step_units(&self.at_exact(x, y))
     }
+}
+
+/// `floor(2^62 / divisor)`, for `0 < divisor < 2^31` (a doubled area under 2^15-pixel
+/// deltas). On Arm cores with a hardware 32-bit divide (Cortex-M3 and up, which
+/// `target_has_atomic` tells from Cortex-M0), divisors below 2^16 (triangles under 32,768
+/// pixels, the common case) take [`reciprocal_by_digits`]: four hardware divides instead of the
+/// 64-bit library division (measured: 3 to 4% fewer instructions per small interpolated
+/// triangle on Cortex-M4F). On Cortex-M0 each 32-bit divide is a library call too and the two
+/// measure the same; x86-64 divides 64 bits in hardware.
+#[inline(always)]
+fn reciprocal_2_62(divisor: u64) -> u64 {
+    match u32::try_from(divisor) {
+        Ok(d @ 1..=0xFFFF) if cfg!(all(target_arch = "arm", target_has_atomic = "32")) => {
+            reciprocal_by_digits(d)
+        }
+        _ => (1u64 << 62) / divisor.max(1),
+    }
+}
+
+/// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 (0x4000 followed by three
+/// zero digits, base 2^16): each partial remainder is below `d`, so each step's dividend fits
+/// 32 bits and its quotient digit 16.
+#[inline(always)]
+fn reciprocal_by_digits(d: u32) -> u64 {
+    let mut quotient = 0u64;
+    let mut remainder = 0u32;
+    for digit in [0x4000, 0, 0, 0] {
+        let dividend = (remainder << 16) | digit;
+        let (q, r) = (dividend / d, dividend % d);
+        quotient = (quotient << 16) | u64::from(q);
+        remainder = r;
+    }
+    quotient
 }
 
 /// `numerator * ±reciprocal / 2^shift`, rounded half up (negative when `negative` says), as
@@ -583,6 +616,29 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    #[test]
+    fn reciprocals_are_the_64_bit_division() {
+        let check = |d: u64| {
+            assert_eq!(reciprocal_2_62(d), (1u64 << 62) / d, "{d}");
+            if let Ok(small @ 1..=0xFFFF) = u32::try_from(d) {
+                assert_eq!(reciprocal_by_digits(small), (1u64 << 62) / d, "{d}");
+            }
+        };
+        for d in 1..=70_000 {
+            check(d);
+        }
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            check(1 + x % ((1 << 31) - 1));
+        }
+        for d in [(1 << 16) - 1, 1 << 16, (1 << 31) - 1, 1 << 30] {
+            check(d);
         }
     }
 
