@@ -75,6 +75,22 @@ where
 ///
 /// Solid fills over a uniform background blend once per run of equal pixels, not once per
 /// pixel.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*, primitives::Rectangle};
+/// use trirast::Framebuffer;
+///
+/// let mut pixels = [Gray8::new(100); 4 * 4];
+/// let mut frame = Framebuffer::new(&mut pixels, 4, 4)?;
+/// // Any drawable, not only triangles: white at 25% over 100.
+/// let mut translucent = frame.translucent(64);
+/// translucent.fill_solid(&Rectangle::new(Point::zero(), Size::new(2, 2)), Gray8::WHITE).unwrap();
+/// assert_eq!(frame.pixel(Point::new(1, 1)), Some(Gray8::new(139)));
+/// assert_eq!(frame.pixel(Point::new(3, 3)), Some(Gray8::new(100)));
+/// # Ok::<(), trirast::Error>(())
+/// ```
 #[derive(Debug)]
 pub struct Translucent<'f, 'a, C, S = C> {
     frame: &'f mut Framebuffer<'a, C, S>,
