@@ -164,25 +164,52 @@ where
     D: DrawTarget<Color = S::Color>,
 {
     let window = target.bounding_box();
-    draw_plain_in(triangle, style, target, &window, Point::zero())
+    draw_plain_in(triangle, style, target, &window, NoOffset)
+}
+
+/// The offset from screen to target coordinates, as a type: [`NoOffset`] for targets that are
+/// the screen, so that the zero is a constant wherever the span sink lives (the wide walk
+/// keeps the sink in memory: a stored zero is reloaded for every span), or a [`Point`] for a
+/// band's framebuffer.
+pub(crate) trait Offset: Copy {
+    fn point(self) -> Point;
+}
+
+/// Target and screen coordinates are the same.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct NoOffset;
+
+impl Offset for NoOffset {
+    #[inline(always)]
+    fn point(self) -> Point {
+        Point::zero()
+    }
+}
+
+impl Offset for Point {
+    #[inline(always)]
+    fn point(self) -> Point {
+        self
+    }
 }
 
 /// [`draw_plain`] with interpolation set up for `setup` (the whole screen, when `target` is a
 /// band of it), so that colours do not depend on the part of the screen drawn, into a target
 /// whose pixel `(x, y)` is the screen's `(x, y) + offset`.
 #[inline(always)]
-pub(crate) fn draw_plain_in<S, D>(
+pub(crate) fn draw_plain_in<S, D, O>(
     triangle: &Triangle,
     style: &S,
     target: &mut D,
     setup: &Rectangle,
-    offset: Point,
+    offset: O,
 ) -> Result<(), D::Error>
 where
     S: TriangleStyle,
     D: DrawTarget<Color = S::Color>,
+    O: Offset,
 {
-    let window = on_screen(target.bounding_box(), offset);
+    let window = on_screen(target.bounding_box(), offset.point());
     let visitor = PlainVisitor {
         target,
         triangle,
@@ -194,16 +221,16 @@ where
 }
 
 /// Walks the triangle and paints every span.
-struct PlainVisitor<'a, D> {
+struct PlainVisitor<'a, D, O> {
     target: &'a mut D,
     triangle: &'a Triangle,
     rule: FillRule,
     /// Where spans are drawn, in screen coordinates.
     window: Rectangle,
-    offset: Point,
+    offset: O,
 }
 
-impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
+impl<D: DrawTarget, O: Offset> PaintVisitor<D::Color> for PlainVisitor<'_, D, O> {
     type Output = Result<(), D::Error>;
 
     #[inline(always)]
@@ -218,23 +245,24 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for PlainVisitor<'_, D> {
 }
 
 /// Paints each span as the walk emits it.
-struct PaintSpans<'a, D, P> {
+struct PaintSpans<'a, D, P, O> {
     target: &'a mut D,
     painter: P,
-    offset: Point,
+    offset: O,
 }
 
-impl<D, P> SpanSink for PaintSpans<'_, D, P>
+impl<D, P, O> SpanSink for PaintSpans<'_, D, P, O>
 where
     D: DrawTarget,
     P: Painter<Color = D::Color>,
+    O: Offset,
 {
     type Error = D::Error;
 
     // A forwarder: the painter decides what is inlined into the row loop (a flat fill is).
     #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
-        self.painter.paint(span, self.offset, self.target)
+        self.painter.paint(span, self.offset.point(), self.target)
     }
 }
 
