@@ -216,6 +216,19 @@ where
     /// rasterizer's spans never come here, so one copy per colour type serves every shader.
     #[inline(never)]
     fn fill_contiguous_clipped(&mut self, area: &Rectangle, colors: &mut dyn Iterator<Item = C>) {
+        self.zip_area(area, colors, |dst, color| *dst = S::store(color));
+    }
+
+    /// Calls `write` with each pixel of `area` inside the image and its colour from `colors`,
+    /// which holds one colour per pixel of the whole area, row-major: the colours of pixels
+    /// outside the image are skipped. Stops when `colors` ends.
+    #[inline]
+    pub(super) fn zip_area<I: Iterator<Item = C> + ?Sized>(
+        &mut self,
+        area: &Rectangle,
+        colors: &mut I,
+        mut write: impl FnMut(&mut S, C),
+    ) {
         let Some(window) = self.clip(area) else {
             return;
         };
@@ -230,7 +243,7 @@ where
             let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
             let mut written = 0;
             for (dst, color) in row.iter_mut().zip(&mut *colors) {
-                *dst = S::store(color);
+                write(dst, color);
                 written += 1;
             }
             if written < row.len() {
@@ -243,9 +256,9 @@ where
     /// The pixels of one row from column `x`, `len` long, if all inside the image.
     #[inline(always)]
     fn row_run(&mut self, y: i32, x: i32, len: u32) -> Option<&mut [S]> {
-        // Sides fit i32, so negative coordinates wrap to values above them. With 64-bit `usize`, `row * width` cannot wrap either (both
-        // are below 2^32), so the slice bound alone rejects rows below the image; 32-bit
-        // targets check the row first.
+        // Sides fit i32, so negative coordinates wrap to values above them. With 64-bit
+        // `usize`, `row * width` cannot wrap (both are below 2^32), so the slice bound alone
+        // rejects rows below the image; 32-bit targets check the row first.
         let (row, column) = (y as u32 as usize, x as u32);
         let row_inside = usize::BITS >= 64 || row < self.height;
         // Sides are below 2^31 (checked in `new`); saying so lets the compiler see that
@@ -257,25 +270,6 @@ where
             self.pixels.get_mut(start..start + len as usize)
         } else {
             None
-        }
-    }
-
-    /// Calls `update` with each pixel of `area` that lies inside the image, row by row, and
-    /// the pixel's index within `area` (row-major): for targets that read what they write
-    /// ([`Translucent`](crate::target::Translucent)).
-    pub(super) fn update_area(&mut self, area: &Rectangle, mut update: impl FnMut(u64, &mut S)) {
-        let Some(window) = self.clip(area) else {
-            return;
-        };
-        let left = (window.x0 as i64 - i64::from(area.top_left.x)) as u64;
-        let above = (window.y0 as i64 - i64::from(area.top_left.y)) as u64;
-        let stride = u64::from(area.size.width);
-        for (k, y) in (window.y0..window.y1).enumerate() {
-            let first = (above + k as u64) * stride + left;
-            let row = &mut self.pixels[y * self.width + window.x0..y * self.width + window.x1];
-            for (j, pixel) in row.iter_mut().enumerate() {
-                update(first + j as u64, pixel);
-            }
         }
     }
 

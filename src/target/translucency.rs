@@ -158,24 +158,10 @@ where
                 return Ok(());
             }
         }
-        let mut colors = colors.into_iter();
-        // Index in `area` of the next colour `colors` yields; `None` once it has ended.
-        let mut next = Some(0u64);
-        self.frame.update_area(area, |index, pixel| {
-            let Some(expected) = next else { return };
-            // Colours of pixels outside the image are skipped.
-            let color = match index - expected {
-                0 => colors.next(),
-                skipped => colors.nth(usize::try_from(skipped).unwrap_or(usize::MAX)),
-            };
-            match color {
-                Some(color) => {
-                    *pixel = S::store(blend(color, pixel.load(), opacity));
-                    next = Some(index + 1);
-                }
-                None => next = None,
-            }
-        });
+        self.frame
+            .zip_area(area, &mut colors.into_iter(), |pixel, color| {
+                *pixel = S::store(blend(color, pixel.load(), opacity));
+            });
         Ok(())
     }
 
@@ -183,7 +169,9 @@ where
         let opacity = self.opacity;
         // Pixels often repeat (a background, an earlier fill): blend each new one once.
         let mut last: Option<(C, S)> = None;
-        self.frame.update_area(area, |_, pixel| {
+        // One colour for every pixel: skipping those outside the image is free.
+        let mut colors = core::iter::repeat(color);
+        self.frame.zip_area(area, &mut colors, |pixel, color| {
             let under = pixel.load();
             let blended = match last {
                 Some((seen, result)) if seen == under => result,
@@ -353,6 +341,49 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// Areas partly outside: each pixel inside takes its own colour of the area's row-major
+    /// sequence, blended over what it held; the rest stay; solid fills likewise.
+    #[test]
+    fn clipped_areas_blend_the_right_colours() {
+        use embedded_graphics::{geometry::Point, prelude::Size};
+        let under = |i: usize| Gray8::new(i as u8 * 10);
+        let mut pixels: [Gray8; 12] = core::array::from_fn(under);
+        let mut frame = Framebuffer::new(&mut pixels, 4, 3).unwrap();
+        // A 3 x 3 area hanging off the top-left corner, colours 20, 40, ... 180 row by row.
+        let area = Rectangle::new(Point::new(-1, -1), Size::new(3, 3));
+        let colors = (1..=9u8).map(|k| Gray8::new(k * 20));
+        frame
+            .translucent(100)
+            .fill_contiguous(&area, colors)
+            .unwrap();
+        for (i, &p) in pixels.iter().enumerate() {
+            let (x, y) = (i % 4, i / 4);
+            let want = if x < 2 && y < 2 {
+                let k = (y + 1) * 3 + (x + 1) + 1;
+                blend(Gray8::new(k as u8 * 20), under(i), 100)
+            } else {
+                under(i)
+            };
+            assert_eq!(p, want, "pixel {i}");
+        }
+        let mut pixels: [Gray8; 12] = core::array::from_fn(under);
+        let mut frame = Framebuffer::new(&mut pixels, 4, 3).unwrap();
+        let area = Rectangle::new(Point::new(2, 1), Size::new(9, 9));
+        frame
+            .translucent(30)
+            .fill_solid(&area, Gray8::new(255))
+            .unwrap();
+        for (i, &p) in pixels.iter().enumerate() {
+            let inside = i % 4 >= 2 && i / 4 >= 1;
+            let want = if inside {
+                blend(Gray8::new(255), under(i), 30)
+            } else {
+                under(i)
+            };
+            assert_eq!(p, want, "pixel {i}");
         }
     }
 
