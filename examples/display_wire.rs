@@ -20,24 +20,16 @@ mod scenes;
 #[path = "common/wire.rs"]
 mod wire;
 
-use std::{cell::RefCell, path::PathBuf, rc::Rc};
+use std::path::PathBuf;
 
 use embedded_graphics::{
     pixelcolor::{BinaryColor, Rgb565},
     prelude::*,
-    primitives::Rectangle,
 };
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
-use mipidsi::{interface::SpiInterface, models::ST7789, Builder};
-use ssd1306::{prelude::*, I2CDisplayInterface, Ssd1306};
-use trirast::{
-    band::{Bands, Scene, SceneStyle},
-    Framebuffer, GouraudStyle, Triangle,
-};
-use wire::{Controller, DcPin, Gddram, NoDelay, RecordingI2c, RecordingSpi, Wire, CASET};
+use trirast::{band::Bands, Framebuffer};
+use wire::{Controller, Gddram, CASET, SIDE};
 
-/// The panel: 240 x 240 pixels.
-const SIDE: u32 = 240;
 /// Bytes of the driver's pixel buffer (`SpiInterface`): one SPI write per 512 bytes of pixels.
 const DRIVER_BUFFER: usize = 512;
 /// Rows per band.
@@ -46,14 +38,12 @@ const BAND_ROWS: u32 = 16;
 const SPI_HZ: u64 = 62_500_000;
 
 fn main() {
-    let mut triangles = Vec::new();
-    scenes::Scene::Scene200.for_each(|t| triangles.push(t));
-    let screen = Rectangle::new(Point::zero(), Size::new(SIDE, SIDE));
+    let scene = wire::scene200();
     let dir = PathBuf::from("target/display-wire");
     std::fs::create_dir_all(&dir).expect("cannot create target/display-wire");
     println!(
         "{} Gouraud triangles (scene200) to an ST7789 {SIDE}x{SIDE} through mipidsi 0.10, {DRIVER_BUFFER}-byte driver buffer, SPI at {:.1} MHz",
-        triangles.len(),
+        scene.len(),
         SPI_HZ as f64 / 1e6
     );
     println!("| Way | pixel memory (bytes) | bytes on the wire | SPI transactions | windows | bits on the wire at 62.5 MHz |");
@@ -64,54 +54,29 @@ fn main() {
         ("bands", u64::from(SIDE * BAND_ROWS * 2)),
     ];
     for (name, memory) in ways {
-        let recording = Rc::new(RefCell::new(Wire::default()));
         let mut buffer = [0u8; DRIVER_BUFFER];
-        let interface = SpiInterface::new(
-            RecordingSpi(recording.clone()),
-            DcPin(recording.clone()),
-            &mut buffer,
-        );
-        let mut display = Builder::new(ST7789, interface)
-            .display_size(SIDE as u16, SIDE as u16)
-            .init(&mut NoDelay)
-            .expect("the recording bus does not fail");
-        // Count the frame only, not the initialisation.
-        *recording.borrow_mut() = Wire::default();
+        let (mut display, recording) = wire::panel(&mut buffer);
         match name {
             "direct" => {
-                for t in &triangles {
-                    let [a, b, c] = t.vertices;
-                    Triangle::new(a, b, c)
-                        .into_styled(GouraudStyle::new(t.vertex_colors))
-                        .draw(&mut display)
-                        .unwrap();
+                for (triangle, style) in &scene {
+                    triangle.into_styled(*style).draw(&mut display).unwrap();
                 }
             }
             "framebuffer" => {
                 let mut pixels = vec![Rgb565::BLACK; (SIDE * SIDE) as usize];
                 let mut frame = Framebuffer::new(&mut pixels, SIDE, SIDE).unwrap();
-                for t in &triangles {
-                    let [a, b, c] = t.vertices;
-                    Triangle::new(a, b, c)
-                        .into_styled(GouraudStyle::new(t.vertex_colors))
-                        .draw(&mut frame)
-                        .unwrap();
+                for (triangle, style) in &scene {
+                    triangle.into_styled(*style).draw(&mut frame).unwrap();
                 }
                 display
-                    .fill_contiguous(&screen, pixels.iter().copied())
+                    .fill_contiguous(&wire::screen(), pixels.iter().copied())
                     .unwrap();
             }
             _ => {
-                let mut scene: Box<Scene<Rgb565, 256>> = Box::new(Scene::new(screen));
-                for t in &triangles {
-                    let [a, b, c] = t.vertices;
-                    let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
-                    scene.push(Triangle::new(a, b, c), style).unwrap();
-                }
                 let mut band = vec![Rgb565::BLACK; (SIDE * BAND_ROWS) as usize];
                 Bands::new(&mut band, SIDE, BAND_ROWS)
                     .unwrap()
-                    .render(&scene, Rgb565::BLACK, &mut display)
+                    .render(&wire::band_scene(), Rgb565::BLACK, &mut display)
                     .unwrap();
             }
         }
@@ -146,12 +111,7 @@ fn main() {
 
 /// The OLED: one frame in the driver's buffered graphics mode (a 1 KB buffer), flushed.
 fn oled(dir: &std::path::Path) {
-    let recording = Rc::new(RefCell::new(Wire::default()));
-    let interface = I2CDisplayInterface::new(RecordingI2c(recording.clone()));
-    let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
-        .into_buffered_graphics_mode();
-    display.init().expect("the recording bus does not fail");
-    *recording.borrow_mut() = Wire::default();
+    let (mut display, recording) = wire::oled();
     for (triangle, style) in wire::oled_scene() {
         triangle.into_styled(style).draw(&mut display).unwrap();
     }

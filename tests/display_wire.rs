@@ -9,73 +9,26 @@ mod scenes;
 #[path = "../examples/common/wire.rs"]
 mod wire;
 
-use std::{cell::RefCell, rc::Rc};
-
 use embedded_graphics::{
     pixelcolor::{BinaryColor, Rgb565},
     prelude::*,
-    primitives::Rectangle,
 };
-use mipidsi::{
-    interface::{SpiError, SpiInterface},
-    models::ST7789,
-    Builder, Display, NoResetPin,
-};
-use ssd1306::{prelude::*, I2CDisplayInterface, Ssd1306};
+use mipidsi::interface::SpiError;
 use trirast::{
-    band::{BandError, Bands, Scene, SceneStyle},
+    band::{BandError, Bands},
     coverage::for_each_span,
-    FillRule, Framebuffer, GouraudStyle, Triangle,
+    FillRule, Framebuffer,
 };
 use wire::{
-    BusFailed, Controller, DcPin, Gddram, NoDelay, RecordingI2c, RecordingSpi, Wire, CASET, RAMWR,
-    RASET,
+    band_scene, panel, scene200, screen, BusFailed, Controller, Gddram, Panel, Wire, CASET, RAMWR,
+    RASET, SIDE,
 };
-
-const SIDE: u32 = 240;
-
-type Panel<'b> = Display<SpiInterface<'b, RecordingSpi, DcPin>, ST7789, NoResetPin>;
-
-/// An initialised ST7789 240 x 240 over a fresh recording, which then holds nothing.
-fn panel(buffer: &mut [u8]) -> (Panel<'_>, Rc<RefCell<Wire>>) {
-    let recording = Rc::new(RefCell::new(Wire::default()));
-    let interface = SpiInterface::new(
-        RecordingSpi(recording.clone()),
-        DcPin(recording.clone()),
-        buffer,
-    );
-    let display = Builder::new(ST7789, interface)
-        .display_size(SIDE as u16, SIDE as u16)
-        .init(&mut NoDelay)
-        .unwrap();
-    *recording.borrow_mut() = Wire::default();
-    (display, recording)
-}
-
-fn triangles() -> Vec<Triangle> {
-    let mut out = Vec::new();
-    scenes::Scene::Scene200.for_each(|t| {
-        let [a, b, c] = t.vertices;
-        out.push(Triangle::new(a, b, c));
-    });
-    out
-}
-
-fn styles() -> Vec<GouraudStyle<Rgb565>> {
-    let mut out = Vec::new();
-    scenes::Scene::Scene200.for_each(|t| out.push(GouraudStyle::new(t.vertex_colors)));
-    out
-}
-
-fn screen() -> Rectangle {
-    Rectangle::new(Point::zero(), Size::new(SIDE, SIDE))
-}
 
 /// The reference: the scene drawn into a framebuffer.
 fn full_frame() -> Vec<Rgb565> {
     let mut pixels = vec![Rgb565::BLACK; (SIDE * SIDE) as usize];
     let mut frame = Framebuffer::new(&mut pixels, SIDE, SIDE).unwrap();
-    for (t, s) in triangles().iter().zip(styles()) {
+    for (t, s) in scene200() {
         t.into_styled(s).draw(&mut frame).unwrap();
     }
     pixels
@@ -93,28 +46,24 @@ fn banded(
     rows: u32,
     display: &mut Panel<'_>,
 ) -> Result<(), BandError<SpiError<BusFailed, core::convert::Infallible>>> {
-    let mut scene: Box<Scene<Rgb565, 256>> = Box::new(Scene::new(screen()));
-    for (t, s) in triangles().into_iter().zip(styles()) {
-        scene.push(t, SceneStyle::Gouraud(s)).unwrap();
-    }
     let mut band = vec![Rgb565::BLACK; (SIDE * rows) as usize];
     Bands::new(&mut band, SIDE, rows)
         .unwrap()
-        .render(&scene, Rgb565::BLACK, display)
+        .render(&band_scene(), Rgb565::BLACK, display)
 }
 
 #[test]
 fn spans_straight_to_the_driver_show_the_frame() {
     let mut buffer = [0u8; 512];
     let (mut display, recording) = panel(&mut buffer);
-    for (t, s) in triangles().iter().zip(styles()) {
+    for (t, s) in scene200() {
         t.into_styled(s).draw(&mut display).unwrap();
     }
     let wire = recording.borrow();
     assert!(decoded(&wire) == full_frame());
     // One window per span: as many as the spans inside the screen.
     let mut spans = 0;
-    for t in triangles() {
+    for (t, _) in scene200() {
         for_each_span(&t, FillRule::TopLeft, &screen(), |_| {
             spans += 1;
             Ok::<(), ()>(())
@@ -183,9 +132,8 @@ fn a_failing_bus_stops_drawing_with_its_error() {
         let mut buffer = [0u8; 512];
         let (mut display, recording) = panel(&mut buffer);
         recording.borrow_mut().fail_after = Some(allowed);
-        let error = triangles()
-            .iter()
-            .zip(styles())
+        let error = scene200()
+            .into_iter()
             .find_map(|(t, s)| t.into_styled(s).draw(&mut display).err());
         assert!(matches!(error, Some(SpiError::Spi(BusFailed))));
         assert_eq!(recording.borrow().transactions, allowed);
@@ -194,12 +142,7 @@ fn a_failing_bus_stops_drawing_with_its_error() {
 
 #[test]
 fn an_oled_frame_arrives_whole_in_one_flush() {
-    let recording = Rc::new(RefCell::new(Wire::default()));
-    let interface = I2CDisplayInterface::new(RecordingI2c(recording.clone()));
-    let mut display = Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
-        .into_buffered_graphics_mode();
-    display.init().unwrap();
-    *recording.borrow_mut() = Wire::default();
+    let (mut display, recording) = wire::oled();
     let mut pixels = [BinaryColor::Off; 128 * 64];
     let mut frame = Framebuffer::new(&mut pixels, 128, 64).unwrap();
     for (triangle, style) in wire::oled_scene() {

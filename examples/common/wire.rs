@@ -2,18 +2,79 @@
 //! driver and a recording I2C bus for the real `ssd1306` driver, and decoders that play the
 //! recorded bytes into models of the controllers' memories: an ST7789's (column and page
 //! windows, memory writes of `Rgb565`) and an SSD1306's (1-bit pages, horizontal addressing).
-//! Shared by `examples/display_wire.rs` and `tests/display_wire.rs`.
+//! Shared by `examples/display_wire.rs` and `tests/display_wire.rs`, which both also include
+//! `examples/common/scenes.rs` as `scenes`.
 #![allow(dead_code)]
 
 use std::{cell::RefCell, convert::Infallible, rc::Rc};
 
-use embedded_graphics::pixelcolor::{raw::RawU16, BinaryColor, Rgb565};
+use embedded_graphics::{
+    pixelcolor::{raw::RawU16, BinaryColor, Rgb565},
+    prelude::{Point, Size},
+    primitives::Rectangle,
+};
 use embedded_hal::{
     delay::DelayNs,
     digital::{ErrorType as PinErrorType, OutputPin},
     i2c::{self, I2c},
     spi::{ErrorKind, ErrorType, Operation, SpiDevice},
 };
+
+/// Side of the ST7789 panel the SPI examples draw to.
+pub const SIDE: u32 = 240;
+
+/// The panel's screen.
+pub fn screen() -> Rectangle {
+    Rectangle::new(Point::zero(), Size::new(SIDE, SIDE))
+}
+
+/// An ST7789 `SIDE` x `SIDE` through the real `mipidsi` driver over a recording bus.
+pub type Panel<'b> = mipidsi::Display<
+    mipidsi::interface::SpiInterface<'b, RecordingSpi, DcPin>,
+    mipidsi::models::ST7789,
+    mipidsi::NoResetPin,
+>;
+
+/// An initialised [`Panel`] with `buffer` as the driver's pixel buffer, and its recording,
+/// cleared after the initialisation so that it holds the frame only.
+pub fn panel(buffer: &mut [u8]) -> (Panel<'_>, Recording) {
+    let recording = Rc::new(RefCell::new(Wire::default()));
+    let interface = mipidsi::interface::SpiInterface::new(
+        RecordingSpi(recording.clone()),
+        DcPin(recording.clone()),
+        buffer,
+    );
+    let display = mipidsi::Builder::new(mipidsi::models::ST7789, interface)
+        .display_size(SIDE as u16, SIDE as u16)
+        .init(&mut NoDelay)
+        .expect("the recording bus does not fail");
+    *recording.borrow_mut() = Wire::default();
+    (display, recording)
+}
+
+/// The SPI scene: the benchmark's `scene200`, Gouraud-shaded, in drawing order.
+pub fn scene200() -> Vec<(trirast::Triangle, trirast::GouraudStyle<Rgb565>)> {
+    let mut out = Vec::new();
+    crate::scenes::Scene::Scene200.for_each(|t| {
+        let [a, b, c] = t.vertices;
+        out.push((
+            trirast::Triangle::new(a, b, c),
+            trirast::GouraudStyle::new(t.vertex_colors),
+        ));
+    });
+    out
+}
+
+/// [`scene200`] as a band scene on [`screen`].
+pub fn band_scene() -> Box<trirast::band::Scene<'static, Rgb565, 256>> {
+    let mut scene = Box::new(trirast::band::Scene::new(screen()));
+    for (triangle, style) in scene200() {
+        scene
+            .push(triangle, trirast::band::SceneStyle::Gouraud(style))
+            .expect("256 triangles fit");
+    }
+    scene
+}
 
 /// Column address set, page address set, memory write (MIPI DCS).
 pub const CASET: u8 = 0x2A;
@@ -309,6 +370,26 @@ impl Gddram {
             BinaryColor::Off
         }
     }
+}
+
+/// An SSD1306 128 x 64 through the real `ssd1306` driver in buffered graphics mode over a
+/// recording I2C bus.
+pub type Oled = ssd1306::Ssd1306<
+    ssd1306::prelude::I2CInterface<RecordingI2c>,
+    ssd1306::size::DisplaySize128x64,
+    ssd1306::mode::BufferedGraphicsMode<ssd1306::size::DisplaySize128x64>,
+>;
+
+/// An initialised [`Oled`] and its recording, cleared after the initialisation.
+pub fn oled() -> (Oled, Recording) {
+    use ssd1306::prelude::*;
+    let recording = Rc::new(RefCell::new(Wire::default()));
+    let interface = ssd1306::I2CDisplayInterface::new(RecordingI2c(recording.clone()));
+    let mut display = ssd1306::Ssd1306::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
+        .into_buffered_graphics_mode();
+    display.init().expect("the recording bus does not fail");
+    *recording.borrow_mut() = Wire::default();
+    (display, recording)
 }
 
 /// The OLED scene: a dithered fade across a 128 x 64 panel under a fan of dithered Gouraud
