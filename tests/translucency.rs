@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{reference_covers, Recorder, Rng, Rule};
+use common::{jittered_grid, reference_covers, Recorder, Rng, Rule};
 use embedded_graphics::{
     pixelcolor::{Gray8, Rgb565},
     prelude::*,
@@ -47,44 +47,6 @@ fn point(rng: &mut Rng, reach: i32) -> Point {
     )
 }
 
-/// A mesh over the frame sharing every inner edge: a grid of jittered points, each cell split
-/// along a random diagonal.
-fn mesh(rng: &mut Rng, nx: i32, ny: i32) -> Vec<[Point; 3]> {
-    let (cw, ch) = (W as i32 / nx, H as i32 / ny);
-    let at = |i: i32, j: i32, rng: &mut Rng| {
-        let jitter = |inner: bool, cell: i32, rng: &mut Rng| {
-            if inner {
-                rng.range(-(cell - 1) / 4, (cell - 1) / 4)
-            } else {
-                0
-            }
-        };
-        Point::new(
-            i * cw + jitter(i > 0 && i < nx, cw, rng),
-            j * ch + jitter(j > 0 && j < ny, ch, rng),
-        )
-    };
-    let mut points = Vec::new();
-    for j in 0..=ny {
-        for i in 0..=nx {
-            points.push(at(i, j, rng));
-        }
-    }
-    let p = |i: i32, j: i32| points[(j * (nx + 1) + i) as usize];
-    let mut triangles = Vec::new();
-    for j in 0..ny {
-        for i in 0..nx {
-            let (a, b, c, d) = (p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1));
-            if rng.range(0, 1) == 0 {
-                triangles.extend([[a, b, c], [a, c, d]]);
-            } else {
-                triangles.extend([[a, b, d], [b, c, d]]);
-            }
-        }
-    }
-    triangles
-}
-
 fn frame_points() -> impl Iterator<Item = Point> {
     (0..H as i32).flat_map(|y| (0..W as i32).map(move |x| Point::new(x, y)))
 }
@@ -123,7 +85,8 @@ proptest! {
         let mut rng = Rng(seed);
         let background = color(&mut rng);
         let opacity = rng.range(1, 254) as u8;
-        let triangles = mesh(&mut rng, nx, ny);
+        let frame = Rectangle::new(Point::zero(), Size::new(W, H));
+        let triangles = jittered_grid(frame, nx, ny, &mut rng);
         let colors: Vec<Rgb565> = triangles.iter().map(|_| color(&mut rng)).collect();
         let mut pixels = vec![background; (W * H) as usize];
         let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{reference_covers, window_points, CountingTarget, Offset, Rng, Rule};
+use common::{jittered_grid, reference_covers, window_points, CountingTarget, Offset, Rng, Rule};
 use embedded_graphics::{
     mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle,
 };
@@ -32,51 +32,6 @@ fn draw_all<D: DrawTarget<Color = BinaryColor>>(
             .draw(target)
             .unwrap();
     }
-}
-
-/// A grid of `nx` x `ny` cells over `area`, inner points jittered, border points sliding along
-/// the border only, each cell split along a random diagonal. The union is exactly `area`.
-fn jittered_grid(area: Rectangle, nx: i32, ny: i32, rng: &mut Rng) -> Vec<[Point; 3]> {
-    let (x0, y0) = (area.top_left.x, area.top_left.y);
-    let (w, h) = (area.size.width as i32, area.size.height as i32);
-    let mut pts = vec![Point::zero(); ((nx + 1) * (ny + 1)) as usize];
-    for j in 0..=ny {
-        for i in 0..=nx {
-            let (cw, ch) = (w / nx, h / ny);
-            let mut x = x0 + w * i / nx;
-            let mut y = y0 + h * j / ny;
-            // Jitter below a quarter cell keeps every quad convex.
-            if i != 0 && i != nx {
-                x += rng.range(-(cw - 1) / 4, (cw - 1) / 4);
-            }
-            if j != 0 && j != ny {
-                y += rng.range(-(ch - 1) / 4, (ch - 1) / 4);
-            }
-            pts[(j * (nx + 1) + i) as usize] = Point::new(x, y);
-        }
-    }
-    let at = |i: i32, j: i32| pts[(j * (nx + 1) + i) as usize];
-    let mut tris = Vec::new();
-    for j in 0..ny {
-        for i in 0..nx {
-            let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-            if rng.range(0, 1) == 0 {
-                tris.push([a, b, c]);
-                tris.push([a, c, d]);
-            } else {
-                tris.push([a, b, d]);
-                tris.push([b, c, d]);
-            }
-        }
-    }
-    for t in &tris {
-        assert_eq!(
-            Triangle { vertices: *t }.orientation(),
-            Orientation::Clockwise,
-            "grid folded: {t:?}"
-        );
-    }
-    tris
 }
 
 /// A fan around `center` through points at increasing angles (a star-shaped polygon).
