@@ -266,8 +266,6 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
     }
 }
 
-#[cfg(not(target_has_atomic = "32"))]
-use scale_split as scale;
 /// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
 /// of about forty instructions on Cortex-M0.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
@@ -279,6 +277,8 @@ fn widening_mul(a: u32, b: u32) -> u64 {
     (u64::from(a_high * b_high) << 32) + (middle << 16) + u64::from(a_low * b_low)
 }
 
+#[cfg(not(target_has_atomic = "32"))]
+use scale_split as scale;
 #[cfg(target_has_atomic = "32")]
 use scale_wide as scale;
 

@@ -137,7 +137,7 @@ fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
 /// `value / 255` rounded to nearest, for `value <= 255 * 255`, without a division (a
 /// library call on Cortex-M0).
 #[inline(always)]
-pub(crate) fn div_255_rounded(value: u32) -> u32 {
+fn div_255_rounded(value: u32) -> u32 {
     let t = value + 128;
     (t + (t >> 8)) >> 8
 }
