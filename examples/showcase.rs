@@ -11,6 +11,8 @@ mod breakout;
 mod cube;
 #[path = "common/scenes.rs"]
 mod scenes;
+#[path = "common/ssd0323.rs"]
+mod ssd0323;
 
 use std::{path::PathBuf, time::Instant};
 
@@ -112,6 +114,11 @@ const SCENES: &[Scene] = &[
         name: "band_frame",
         about: "200 depth-tested triangles (Gouraud, textured, flat) rendered 16 rows at a time",
         render: band_frame,
+    },
+    Scene {
+        name: "ssd0323",
+        about: "the cube in dithered 4-bit grey: what QEMU's emulated SSD0323 OLED shows (examples/ssd0323.sh)",
+        render: ssd0323_oled,
     },
     Scene {
         name: "overdraw",
@@ -546,6 +553,19 @@ fn textured_cube() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
     let mut display = SimulatorDisplay::new(Size::new(w, h));
     blit_565(&pixels, w, &mut display);
     (display, OutputSettingsBuilder::new().scale(2).build())
+}
+
+/// The OLED scene of `examples/ssd0323.rs` at 4x, as QEMU magnifies its SSD0323 display
+/// (`examples/ssd0323.sh` checks that QEMU shows exactly these pixels).
+fn ssd0323_oled() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let mut display = SimulatorDisplay::new(Size::new(ssd0323::WIDTH, ssd0323::HEIGHT));
+    for (i, color) in ssd0323::render().into_iter().enumerate() {
+        let (x, y) = (i as u32 % ssd0323::WIDTH, i as u32 / ssd0323::WIDTH);
+        Pixel(Point::new(x as i32, y as i32), Rgb888::from(color))
+            .draw(&mut display)
+            .unwrap();
+    }
+    (display, OutputSettingsBuilder::new().scale(4).build())
 }
 
 /// The spinning cube of `examples/cube.rs`, one frame, beside its depth buffer.
