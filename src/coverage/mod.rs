@@ -5,6 +5,7 @@
 //! the window and handed on as one [`Span`] per row. The result is bit for bit the exact
 //! half-space test under the chosen [`FillRule`].
 
+mod area;
 mod edge;
 mod fill_rule;
 
@@ -14,6 +15,55 @@ use embedded_graphics::{
 };
 
 pub use fill_rule::FillRule;
+
+pub(crate) use area::for_each_coverage_run as for_each_area_run;
+
+/// Calls `emit` with every run of pixels inside `clip` that `triangle` covers in part or in
+/// whole, and how much: the area of each pixel's square (side 1, centred on the pixel) inside
+/// the triangle, from 1 to 255 (whole). Runs go top to bottom and left to right, one pixel
+/// long where an edge crosses the pixels, and one run per row for the pixels between the
+/// edges. This is the coverage anti-aliased drawing blends with
+/// ([`BlendTarget::draw_anti_aliased`](crate::target::BlendTarget::draw_anti_aliased)).
+///
+/// Each coverage is within 1/256 of the exact area (plus rounding to 1/255), for any `i32`
+/// vertices; triangles sharing an edge have coverages that add up to the pixel (within the
+/// same bound). Pixels farther than 2^22 from the origin are not visited.
+///
+/// # Errors
+///
+/// The first error `emit` returns.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{prelude::*, primitives::Rectangle};
+/// use trirast::{coverage::for_each_coverage_run, Triangle};
+///
+/// // A right triangle whose hypotenuse runs through pixel centres: half of each square on it.
+/// let triangle = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+/// let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
+/// let mut runs = Vec::new();
+/// for_each_coverage_run(&triangle, &clip, |span, coverage| {
+///     runs.push((span.x, span.y, span.len, coverage));
+///     Ok::<(), ()>(())
+/// })?;
+/// // Row 4: the pixel on the left edge is half covered, then three whole ones, then the
+/// // diagonal's pixel, half covered again.
+/// let row: Vec<_> = runs.iter().filter(|r| r.1 == 4).copied().collect();
+/// assert_eq!(row[..3], [(0, 4, 1, 128), (1, 4, 3, 255), (4, 4, 1, 128)]);
+/// # Ok::<(), ()>(())
+/// ```
+#[inline]
+pub fn for_each_coverage_run<E, F>(
+    triangle: &Triangle,
+    clip: &Rectangle,
+    mut emit: F,
+) -> Result<(), E>
+where
+    F: FnMut(Span, u8) -> Result<(), E>,
+{
+    area::for_each_coverage_run(triangle, clip, |span, coverage, _| emit(span, coverage))
+}
 
 use crate::{
     geometry::Triangle,

@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{
-    paint::{drawable_style, PaintVisitor, Painter},
+    paint::{drawable_style, stored, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
@@ -169,7 +169,7 @@ where
         Some(visitor.visit(GouraudPainter {
             planes: TrackedPlanes::new(planes),
             dither: self.dither,
-            color: PhantomData,
+            corners: self.colors,
         }))
     }
 }
@@ -179,7 +179,8 @@ where
 struct GouraudPainter<C, const N: usize> {
     planes: TrackedPlanes<N>,
     dither: bool,
-    color: PhantomData<C>,
+    /// The vertices' colours, whose range bounds colours outside the triangle.
+    corners: [C; 3],
 }
 
 impl<C, const N: usize> Painter for GouraudPainter<C, N>
@@ -206,12 +207,55 @@ where
             )
         }
     }
+
+    fn paint_edge<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        self.paint_clamped(run, offset, target)
+    }
 }
 
 impl<C, const N: usize> GouraudPainter<C, N>
 where
     C: ChannelColor<Channels = [u8; N]>,
 {
+    /// Colours of `run` with every channel kept within the vertices' range: anti-aliased edge
+    /// pixels, whose centres may lie outside the triangle, where the interpolated value could
+    /// pass a channel's limits and wrap.
+    #[inline(never)]
+    fn paint_clamped<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let channels = self.corners.map(ChannelColor::channels);
+        let low: [u8; N] =
+            core::array::from_fn(|k| channels.iter().map(|c| c[k]).min().unwrap_or(0));
+        let high: [u8; N] =
+            core::array::from_fn(|k| channels.iter().map(|c| c[k]).max().unwrap_or(0));
+        let mut values = self.planes.at(run.x, run.y);
+        let step = self.planes.planes.step;
+        let mut x = run.x;
+        let colors = (0..run.len).map(|_| {
+            let threshold = if self.dither {
+                BAYER[(run.y & 3) as usize][(x & 3) as usize]
+            } else {
+                0
+            };
+            // Near the triangle the values are far from wrapping as i32.
+            let color = C::from_channels(core::array::from_fn(|k| {
+                let level = (values[k].wrapping_add(threshold) as i32) >> 16;
+                level.clamp(i32::from(low[k]), i32::from(high[k])) as u8
+            }));
+            x = x.wrapping_add(1);
+            for k in 0..N {
+                values[k] = values[k].wrapping_add(step[k]);
+            }
+            color
+        });
+        target.fill_contiguous(&stored(run, offset), colors)
+    }
+
     #[inline(never)]
     fn paint_dithered<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where

@@ -15,8 +15,9 @@ use embedded_graphics::{
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
-    coverage::{walk, FillRule, Span, SpanSink},
+    coverage::{for_each_area_run, walk, FillRule, Span, SpanSink},
     geometry::Triangle,
+    target::BlendTarget,
 };
 
 /// Paints runs of covered pixels, each within one row, for one triangle.
@@ -34,6 +35,21 @@ pub trait Painter {
     fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = Self::Color>;
+
+    /// Paints `run`, pixels an edge crosses, for anti-aliasing: their centres may lie just
+    /// outside the triangle, where interpolated colours can leave the range the vertices
+    /// span, so painters whose colours could wrap there keep them within it.
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    #[inline]
+    fn paint_edge<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Self::Color>,
+    {
+        self.paint(run, offset, target)
+    }
 }
 
 /// Where `run` (screen coordinates) lies in a target whose pixel `(x, y)` is the screen's
@@ -263,6 +279,104 @@ where
     #[inline(always)]
     fn span(&mut self, span: Span) -> Result<(), D::Error> {
         self.painter.paint(span, self.offset.point(), self.target)
+    }
+}
+
+/// Draws `triangle` with `style` into `target` with anti-aliased edges: every pixel blended by
+/// the area of its square the triangle covers (see [`for_each_area_run`]).
+#[inline]
+pub(crate) fn draw_anti_aliased<S, D>(
+    triangle: &Triangle,
+    style: &S,
+    target: &mut D,
+) -> Result<(), D::Error>
+where
+    S: TriangleStyle,
+    D: BlendTarget<Color = S::Color>,
+{
+    let window = target.bounding_box();
+    let visitor = AntiAliasVisitor {
+        target,
+        triangle,
+        window,
+    };
+    style.paint(triangle, &window, visitor).unwrap_or(Ok(()))
+}
+
+/// Walks the triangle's area coverage and paints every run, blended by its coverage.
+struct AntiAliasVisitor<'a, D> {
+    target: &'a mut D,
+    triangle: &'a Triangle,
+    window: Rectangle,
+}
+
+impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
+    type Output = Result<(), D::Error>;
+
+    fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
+        let target = self.target;
+        for_each_area_run(self.triangle, &self.window, |run, coverage, edge| {
+            let mut blended = Blended {
+                target: &mut *target,
+                opacity: coverage,
+            };
+            if edge {
+                painter.paint_edge(run, Point::zero(), &mut blended)
+            } else {
+                painter.paint(run, Point::zero(), &mut blended)
+            }
+        })
+    }
+}
+
+/// A [`BlendTarget`] seen as a plain target that blends everything at `opacity` (and writes
+/// straight through at 255).
+struct Blended<'t, D> {
+    target: &'t mut D,
+    opacity: u8,
+}
+
+impl<D: BlendTarget> embedded_graphics::geometry::Dimensions for Blended<'_, D> {
+    fn bounding_box(&self) -> Rectangle {
+        self.target.bounding_box()
+    }
+}
+
+impl<D: BlendTarget> DrawTarget for Blended<'_, D> {
+    type Color = D::Color;
+    type Error = D::Error;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = embedded_graphics::Pixel<D::Color>>,
+    {
+        for embedded_graphics::Pixel(at, color) in pixels {
+            let area = Rectangle::new(at, Size::new(1, 1));
+            self.target
+                .blend_contiguous(&area, core::iter::once(color), self.opacity)?;
+        }
+        Ok(())
+    }
+
+    #[inline]
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = D::Color>,
+    {
+        if self.opacity == u8::MAX {
+            self.target.fill_contiguous(area, colors)
+        } else {
+            self.target.blend_contiguous(area, colors, self.opacity)
+        }
+    }
+
+    #[inline]
+    fn fill_solid(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
+        if self.opacity == u8::MAX {
+            self.target.fill_solid(area, color)
+        } else {
+            self.target.blend_solid(area, color, self.opacity)
+        }
     }
 }
 

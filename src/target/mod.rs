@@ -11,4 +11,4 @@ mod translucency;
 
 pub use framebuffer::Framebuffer;
 pub use storage::StoredPixel;
-pub use translucency::{blend, OverBackground, Translucent};
+pub use translucency::{blend, BlendTarget, OverBackground, Translucent};

@@ -18,7 +18,136 @@ use embedded_graphics::{
 };
 
 use super::{Framebuffer, StoredPixel};
-use crate::shading::ChannelColor;
+use crate::{
+    geometry::Triangle,
+    shading::{paint::draw_anti_aliased, ChannelColor, TriangleStyle},
+};
+
+/// A target that can blend what is drawn over what it shows, at any opacity: the crate's
+/// [`Framebuffer`] (which reads its pixels), [`Translucent`] and [`OverBackground`] (which
+/// blends over a colour the caller knows, for displays that cannot be read). Anti-aliased
+/// drawing needs one: each edge pixel is blended by how much of it the triangle covers.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*, primitives::Rectangle};
+/// use trirast::{target::BlendTarget, Framebuffer};
+///
+/// let mut pixels = [Gray8::new(100); 4 * 4];
+/// let mut frame = Framebuffer::new(&mut pixels, 4, 4)?;
+/// let area = Rectangle::new(Point::zero(), Size::new(2, 1));
+/// frame.blend_contiguous(&area, [Gray8::WHITE, Gray8::BLACK], 51).unwrap();
+/// assert_eq!(frame.pixel(Point::new(0, 0)), Some(Gray8::new(131)));
+/// assert_eq!(frame.pixel(Point::new(1, 0)), Some(Gray8::new(80)));
+/// # Ok::<(), trirast::Error>(())
+/// ```
+pub trait BlendTarget: DrawTarget<Color: ChannelColor> {
+    /// Blends `colors` (one per pixel of `area`, row by row) over the pixels of `area` at
+    /// `opacity` (255: opaque), by [`blend`]. Pixels outside the target are skipped.
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::{Rgb565, RgbColor}, prelude::*, primitives::Rectangle};
+    /// use trirast::{target::{blend, BlendTarget}, Framebuffer};
+    ///
+    /// let mut pixels = [Rgb565::BLUE; 2];
+    /// let mut frame = Framebuffer::new(&mut pixels, 2, 1)?;
+    /// let area = Rectangle::new(Point::new(1, 0), Size::new(1, 1));
+    /// frame.blend_contiguous(&area, [Rgb565::RED], 128).unwrap();
+    /// assert_eq!(pixels, [Rgb565::BLUE, blend(Rgb565::RED, Rgb565::BLUE, 128)]);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    fn blend_contiguous<I>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+        opacity: u8,
+    ) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Self::Color>;
+
+    /// Blends `color` over every pixel of `area` at `opacity`.
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*, primitives::Rectangle};
+    /// use trirast::{target::BlendTarget, Framebuffer};
+    ///
+    /// let mut pixels = [Gray8::new(0); 3];
+    /// let mut frame = Framebuffer::new(&mut pixels, 3, 1)?;
+    /// frame.blend_solid(&Rectangle::new(Point::zero(), Size::new(3, 1)), Gray8::WHITE, 255).unwrap();
+    /// assert_eq!(pixels, [Gray8::WHITE; 3]);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    fn blend_solid(
+        &mut self,
+        area: &Rectangle,
+        color: Self::Color,
+        opacity: u8,
+    ) -> Result<(), Self::Error> {
+        let pixels = area.size.width as usize * area.size.height as usize;
+        self.blend_contiguous(area, core::iter::repeat_n(color, pixels), opacity)
+    }
+
+    /// Draws `triangle` with `style` (any of the crate's styles) with anti-aliased edges:
+    /// each pixel is blended by the area of its square (side 1, centred on the pixel) inside
+    /// the triangle, within 1/256 (see
+    /// [`for_each_coverage_run`](crate::coverage::for_each_coverage_run)). Pixels whose square
+    /// lies wholly inside are drawn as without anti-aliasing, in runs; only the pixels an edge
+    /// crosses are computed and blended one by one. The style's fill rule plays no part.
+    ///
+    /// Edge pixels take the style's colour at their centre, which may lie just outside the
+    /// triangle: Gouraud colours there are kept within the range of the vertices' colours,
+    /// textures are addressed as anywhere else, and a shader's attributes are extrapolated.
+    /// Triangles sharing an edge each blend their part of its pixels, so a mesh shows its
+    /// background faintly along inner edges (the usual price of coverage as opacity).
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*};
+    /// use trirast::{target::BlendTarget, FlatStyle, Framebuffer, Triangle};
+    ///
+    /// let mut pixels = [Gray8::BLACK; 16 * 16];
+    /// let mut frame = Framebuffer::new(&mut pixels, 16, 16)?;
+    /// let triangle = Triangle::new(Point::new(1, 1), Point::new(14, 4), Point::new(4, 14));
+    /// frame.draw_anti_aliased(&triangle, &FlatStyle::new(Gray8::WHITE)).unwrap();
+    /// // Inside: white; on the edges: shades of grey; outside: black.
+    /// assert_eq!(frame.pixel(Point::new(5, 5)), Some(Gray8::WHITE));
+    /// let edge = frame.pixel(Point::new(9, 9)).unwrap().luma();
+    /// assert!(edge > 0 && edge < 255);
+    /// assert_eq!(frame.pixel(Point::new(13, 13)), Some(Gray8::BLACK));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    fn draw_anti_aliased<S>(&mut self, triangle: &Triangle, style: &S) -> Result<(), Self::Error>
+    where
+        S: TriangleStyle<Color = Self::Color>,
+        Self: Sized,
+    {
+        draw_anti_aliased(triangle, style, self)
+    }
+}
+
+/// `a * b / 255`, rounded to nearest: two opacities applied one after the other.
+#[inline]
+fn combined(a: u8, b: u8) -> u8 {
+    ((u32::from(a) * u32::from(b) + 127) / 255) as u8
+}
 
 /// `source` drawn over `destination` at `opacity` (255: `source`, 0: `destination`): each
 /// channel is `(source * opacity + destination * (255 - opacity)) / 255`, rounded to nearest,
@@ -187,6 +316,54 @@ where
     }
 }
 
+impl<C, S> BlendTarget for Framebuffer<'_, C, S>
+where
+    C: ChannelColor,
+    S: StoredPixel<C>,
+{
+    fn blend_contiguous<I>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+        opacity: u8,
+    ) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        self.translucent(opacity).fill_contiguous(area, colors)
+    }
+
+    fn blend_solid(&mut self, area: &Rectangle, color: C, opacity: u8) -> Result<(), Infallible> {
+        self.translucent(opacity).fill_solid(area, color)
+    }
+}
+
+impl<C, S> BlendTarget for Translucent<'_, '_, C, S>
+where
+    C: ChannelColor,
+    S: StoredPixel<C>,
+{
+    fn blend_contiguous<I>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+        opacity: u8,
+    ) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = C>,
+    {
+        let opacity = combined(opacity, self.opacity);
+        self.frame
+            .translucent(opacity)
+            .fill_contiguous(area, colors)
+    }
+
+    fn blend_solid(&mut self, area: &Rectangle, color: C, opacity: u8) -> Result<(), Infallible> {
+        let opacity = combined(opacity, self.opacity);
+        self.frame.translucent(opacity).fill_solid(area, color)
+    }
+}
+
 /// Any target drawn translucently over a background colour the caller knows: each colour is
 /// blended over `background` at `opacity` (by [`blend`]) and drawn through. For targets that
 /// cannot be read, such as display drivers: anti-aliased or translucent shapes straight to
@@ -306,6 +483,39 @@ where
     fn clear(&mut self, color: D::Color) -> Result<(), Self::Error> {
         let color = self.over(color);
         self.target.clear(color)
+    }
+}
+
+impl<D> BlendTarget for OverBackground<'_, D>
+where
+    D: DrawTarget,
+    D::Color: ChannelColor,
+{
+    fn blend_contiguous<I>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+        opacity: u8,
+    ) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = D::Color>,
+    {
+        let (background, opacity) = (self.background, combined(opacity, self.opacity));
+        self.target.fill_contiguous(
+            area,
+            colors.into_iter().map(|c| blend(c, background, opacity)),
+        )
+    }
+
+    fn blend_solid(
+        &mut self,
+        area: &Rectangle,
+        color: D::Color,
+        opacity: u8,
+    ) -> Result<(), D::Error> {
+        let opacity = combined(opacity, self.opacity);
+        self.target
+            .fill_solid(area, blend(color, self.background, opacity))
     }
 }
 
