@@ -8,6 +8,7 @@ use fixed::types::I16F16;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
+    target::BlendTarget,
     texture::{Filter, Texels},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
@@ -47,11 +48,14 @@ pub enum Mode {
     /// Gouraud at half opacity over the frame (`Framebuffer::translucent`): every pixel read,
     /// blended and written. Minus `Gouraud`, what translucency costs.
     Translucent,
+    /// Flat with anti-aliased edges (`BlendTarget::draw_anti_aliased`): edge pixels blended by
+    /// their exact coverage. Minus `Flat`, what anti-aliasing costs.
+    AntiAliased,
 }
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 7] = [
+    pub const ALL: [Mode; 8] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -59,6 +63,7 @@ impl Mode {
         Mode::TexBilinear,
         Mode::Band,
         Mode::Translucent,
+        Mode::AntiAliased,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -71,6 +76,7 @@ impl Mode {
             Mode::TexBilinear => "tex-bilinear",
             Mode::Band => "band",
             Mode::Translucent => "translucent",
+            Mode::AntiAliased => "aa-flat",
         }
     }
 }
@@ -78,7 +84,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 28] = [
+pub const EXPECTED: [(Mode, Scene, u32); 32] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -107,6 +113,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 28] = [
     (Mode::Translucent, Scene::Small, 0x4bfeb1ac),
     (Mode::Translucent, Scene::Mesh, 0xb36319e7),
     (Mode::Translucent, Scene::Scene200, 0x474f6d43),
+    (Mode::AntiAliased, Scene::Big, 0xcd0449bf),
+    (Mode::AntiAliased, Scene::Small, 0x5307ae13),
+    (Mode::AntiAliased, Scene::Mesh, 0x0625bc47),
+    (Mode::AntiAliased, Scene::Scene200, 0xe5a3fed2),
 ];
 
 /// The expected checksum of `mode` on `scene`.
@@ -185,6 +195,16 @@ pub fn draw<const N: usize>(
         Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear),
         Mode::Band => draw_bands(triangles, frame, work),
         Mode::Translucent => draw_translucent(triangles, frame),
+        Mode::AntiAliased => draw_anti_aliased(triangles, frame),
+    }
+}
+
+/// Flat with anti-aliased edges, each edge pixel blended over what the frame holds.
+#[inline(never)]
+fn draw_anti_aliased(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = frame.draw_anti_aliased(&Triangle::new(a, b, c), &FlatStyle::new(t.color));
     }
 }
 

@@ -34,6 +34,8 @@ const FULL: i64 = ONE * ONE;
 const REACH: i64 = 1 << 22;
 /// Most vertices of a chain (from the top vertex to the bottom one).
 const MAX_VERTICES: usize = 3;
+/// Most edges of a chain, and so most pieces of a chain in a row.
+const MAX_EDGES: usize = MAX_VERTICES - 1;
 
 /// A position, in units of 1/4096 pixel, shifted by half a pixel.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -69,15 +71,13 @@ impl Edge {
         // The first row boundary at or below `a` and at or below the first row drawn.
         let y = (a.y.div_euclid(ONE) + i64::from(a.y.rem_euclid(ONE) != 0)) * ONE;
         let y = y.max(first_row * ONE);
-        // Far vertices make this product wide: once per edge.
-        let numerator = i128::from(y - a.y) * i128::from(dx);
-        let (x, remainder) = (
-            a.x + numerator.div_euclid(i128::from(dy)) as i64,
-            numerator.rem_euclid(i128::from(dy)) as i64,
-        );
-        let (step, step_remainder) = ((ONE * dx).div_euclid(dy), (ONE * dx).rem_euclid(dy));
+        let (x, remainder) = start_crossing(y - a.y, dx, dy);
+        let x = a.x + x;
+        let (step, step_remainder) = floor_div(ONE * dx, dy);
         let rows_per_column = if dx == 0 {
             u64::MAX
+        } else if dy < 1 << 32 {
+            ((dy as u64) << 32) / dx.unsigned_abs()
         } else {
             let rows = (u128::from(dy as u64) << 32) / u128::from(dx.unsigned_abs());
             u64::try_from(rows).unwrap_or(u64::MAX)
@@ -111,6 +111,33 @@ impl Edge {
     }
 }
 
+/// `n / d` rounded down, and the remainder (`0..d`), for `d > 0`: one division, in 32 bits
+/// when both fit (on Cortex-M0 every division is a library call, a 64-bit one several).
+#[inline]
+fn floor_div(n: i64, d: i64) -> (i64, i64) {
+    let q = match (i32::try_from(n), i32::try_from(d)) {
+        (Ok(n), Ok(d)) => i64::from(n.div_euclid(d)),
+        _ => n.div_euclid(d),
+    };
+    (q, n - q * d)
+}
+
+/// `down * dx / dy` as quotient (rounded down) and remainder, for `down >= 0`, `dy > 0`: in
+/// 64 bits when the product fits, as it does for vertices within 2^19 pixels of each other.
+fn start_crossing(down: i64, dx: i64, dy: i64) -> (i64, i64) {
+    if let Some(numerator) = down.checked_mul(dx) {
+        floor_div(numerator, dy)
+    } else {
+        let numerator = i128::from(down) * i128::from(dx);
+        let dy = i128::from(dy);
+        // The quotient is at most |dx| and the remainder below dy: both fit.
+        (
+            numerator.div_euclid(dy) as i64,
+            numerator.rem_euclid(dy) as i64,
+        )
+    }
+}
+
 /// The part of a boundary edge inside one row: rows `top..bottom` (1/4096 units), crossing
 /// columns `left..=right` (1/4096 units).
 #[derive(Copy, Clone, Debug, Default)]
@@ -122,10 +149,37 @@ struct Piece {
 }
 
 impl Piece {
+    /// Rows (1/4096 units) where the piece lies left of `x`, for `x` in `left..=right`:
+    /// 32-bit arithmetic within a column's width of either end (the columns anti-aliasing
+    /// solves, on Cortex-M0 a 64-bit multiply is a library call), 64-bit beyond.
+    #[inline(always)]
+    fn rows_left_of(&self, x: i64) -> i64 {
+        let (from_left, from_right) = (x - self.left, self.right - x);
+        let rows = self.rows as u32; // At most ONE.
+        if from_left <= ONE || from_right <= ONE {
+            // Integer and 16 fraction bits of rows per 1/4096 pixel; more than a row per
+            // unit saturates, as the result does.
+            let per_x = (self.rows_per_column >> 32).min(u64::from(rows)) as u32;
+            let fraction = (self.rows_per_column as u32) >> 16;
+            let rows_over = |across: i64| {
+                let across = across as u32;
+                (across * per_x + ((across * fraction) >> 16)).min(rows)
+            };
+            let left_of = if from_left <= from_right {
+                rows_over(from_left)
+            } else {
+                rows - rows_over(from_right)
+            };
+            return i64::from(left_of);
+        }
+        let across = from_left as u64;
+        ((across.saturating_mul(self.rows_per_column) >> 32) as i64).min(self.rows)
+    }
+
     /// The area of column `column`'s square (in 1/4096 pixels from 0) left of this piece, in
     /// units of [`FULL`] per pixel: the integral over the piece's rows of how far the piece
-    /// lies into the column, between 0 and 1.
-    #[inline]
+    /// lies into the column, between 0 and 1. Out of line: one copy serves every caller.
+    #[inline(never)]
     fn area_left_of(&self, column: i64) -> i64 {
         let (x0, x1) = (column, column + ONE);
         if self.right <= x0 {
@@ -134,38 +188,36 @@ impl Piece {
         if self.left >= x1 {
             return self.rows * ONE;
         }
+        // Everything below is within the column: 32-bit products.
+        let rows = self.rows as i32;
         if self.left == self.right {
             // Vertical, inside the column.
-            return self.rows * (self.left - x0);
+            return i64::from(rows * (self.left - x0) as i32);
         }
-        // Rows where the piece lies left of `x`, for `x` in left..=right.
-        let rows_left_of = |x: i64| -> i64 {
-            let across = (x - self.left) as u64;
-            ((across.saturating_mul(self.rows_per_column) >> 32) as i64).min(self.rows)
-        };
         let (enter, leave) = (x0.max(self.left), x1.min(self.right));
         // Where the piece ends inside the column, all its rows are left of its end: the
         // reciprocal, applied to rounded positions, would leave a few rows over.
         let before = if enter == self.left {
             0
         } else {
-            rows_left_of(enter)
+            self.rows_left_of(enter) as i32
         };
         let inside = if leave == self.right {
-            self.rows
+            rows
         } else {
-            rows_left_of(leave).max(before)
+            (self.rows_left_of(leave) as i32).max(before)
         };
         // Past the column: the whole width; inside it: the mean depth into it.
-        (self.rows - inside) * ONE + (inside - before) * (enter + leave - 2 * x0) / 2
+        let depth = (enter + leave - 2 * x0) as i32;
+        i64::from((rows - inside) * ONE as i32 + (inside - before) * depth / 2)
     }
 }
 
 /// The boundaries of one row: pieces of the left and the right chain.
 #[derive(Copy, Clone, Debug, Default)]
 struct RowBoundaries {
-    left: [Piece; MAX_VERTICES],
-    right: [Piece; MAX_VERTICES],
+    left: [Piece; MAX_EDGES],
+    right: [Piece; MAX_EDGES],
     lefts: usize,
     rights: usize,
     /// Rows of the strip inside the triangle (1/4096 units).
@@ -195,10 +247,24 @@ impl RowBoundaries {
     }
 }
 
+/// A placeholder for chains of fewer edges than [`MAX_EDGES`]: never walked.
+const UNUSED_EDGE: Edge = Edge {
+    a: Position { x: 0, y: 0 },
+    b: Position { x: 0, y: 1 },
+    dy: 1,
+    y: 0,
+    x: 0,
+    remainder: 0,
+    step: 0,
+    step_remainder: 0,
+    rows_per_column: u64::MAX,
+};
+
 /// A chain of edges from the top vertex to the bottom one, on one side.
 #[derive(Copy, Clone, Debug)]
 struct Chain {
-    edges: [Option<Edge>; MAX_VERTICES],
+    edges: [Edge; MAX_EDGES],
+    count: usize,
     /// First edge not yet finished above the current row.
     next: usize,
 }
@@ -206,31 +272,31 @@ struct Chain {
 impl Chain {
     /// The chain through `vertices` (from the top vertex down to the bottom one).
     fn new(vertices: &[Position], first_row: i64) -> Self {
-        let mut edges = [None; MAX_VERTICES];
+        let mut edges = [UNUSED_EDGE; MAX_EDGES];
         let mut count = 0;
         for pair in vertices.windows(2) {
-            // Horizontal edges bound no row; rounding can leave a clipped corner a hair
-            // above its neighbour, which bounds nothing either.
-            if pair[1].y > pair[0].y {
-                edges[count] = Some(Edge::new(pair[0], pair[1], first_row));
+            // Horizontal edges bound no row.
+            if pair[1].y > pair[0].y && count < MAX_EDGES {
+                edges[count] = Edge::new(pair[0], pair[1], first_row);
                 count += 1;
             }
         }
-        Self { edges, next: 0 }
+        Self {
+            edges,
+            count,
+            next: 0,
+        }
     }
 
     /// The pieces of this chain inside the strip `top..top + ONE`.
-    fn pieces(&mut self, top: i64, out: &mut [Piece; MAX_VERTICES]) -> usize {
+    #[inline]
+    fn pieces(&mut self, top: i64, out: &mut [Piece; MAX_EDGES]) -> usize {
         let bottom = top + ONE;
-        let mut count = 0;
-        while let Some(Some(edge)) = self.edges.get(self.next) {
-            if edge.b.y <= top {
-                self.next += 1;
-            } else {
-                break;
-            }
+        while self.next < self.count && self.edges[self.next].b.y <= top {
+            self.next += 1;
         }
-        for edge in self.edges[self.next..].iter_mut().map_while(Option::as_mut) {
+        let mut count = 0;
+        for edge in &mut self.edges[self.next..self.count] {
             if edge.a.y >= bottom {
                 break;
             }
@@ -258,6 +324,71 @@ impl Chain {
     }
 }
 
+/// Coverage (units of [`FULL`], 0 to `FULL`) as an opacity, 0 to 255, rounded.
+#[inline(always)]
+fn opacity(coverage: i64) -> u8 {
+    // 16 bits of coverage are plenty; the product then fits 32 bits.
+    let coverage = (coverage >> (2 * FRAC - 16)) as u32;
+    ((coverage * 255 + (1 << 15)) >> 16) as u8
+}
+
+/// Emits the columns of row `y` that one boundary piece crosses, alone: the row's only piece
+/// on its side, with the other side's columns apart. Coverage is what lies right of the piece
+/// (`left_side`) or left of it, of a strip `rows` high. Columns the piece crosses whole, all
+/// but its first and last, take equal steps of rows: their coverage is stepped, not solved.
+#[inline]
+fn lone_piece_columns<E>(
+    piece: &Piece,
+    left_side: bool,
+    rows: i64,
+    y: i32,
+    clip: (i64, i64),
+    emit: &mut impl FnMut(Span, u8, bool) -> Result<(), E>,
+) -> Result<(), E> {
+    let first = piece.left.div_euclid(ONE);
+    let end = (piece.right + ONE - 1).div_euclid(ONE);
+    let mut put = |column: i64, area_left: i64| -> Result<(), E> {
+        let coverage = if left_side {
+            rows * ONE - area_left
+        } else {
+            area_left
+        };
+        let alpha = opacity(coverage.clamp(0, FULL));
+        if alpha > 0 && column >= clip.0 && column < clip.1 {
+            let span = Span {
+                x: column as i32,
+                y,
+                len: 1,
+            };
+            emit(span, alpha, true)?;
+        }
+        Ok(())
+    };
+    if end - first <= 2 {
+        for column in first..end {
+            put(column, piece.area_left_of(column * ONE))?;
+        }
+        return Ok(());
+    }
+    put(first, piece.area_left_of(first * ONE))?;
+    // Middle columns: rows left of the column's left side, in 2^-32 units, step by a column's
+    // worth each time.
+    let (from, to) = ((first + 1).max(clip.0), (end - 1).min(clip.1));
+    if from < to {
+        let per_column = piece.rows_per_column.saturating_mul(ONE as u64);
+        let mut rows_before =
+            ((from * ONE - piece.left) as u64).saturating_mul(piece.rows_per_column);
+        for column in from..to {
+            let rows_after = rows_before.saturating_add(per_column);
+            let before = ((rows_before >> 32) as i64).min(piece.rows);
+            let inside = ((rows_after >> 32) as i64).min(piece.rows);
+            put(column, piece.rows * ONE - (inside + before) * (ONE / 2))?;
+            rows_before = rows_after;
+        }
+    }
+    put(end - 1, piece.area_left_of((end - 1) * ONE))
+}
+
 /// Emits, pixel by pixel, the covered columns `from..to` of row `y` within `clip` (columns
 /// `clip.0..clip.1`).
 fn boundary_columns<E>(
@@ -268,8 +399,7 @@ fn boundary_columns<E>(
     emit: &mut impl FnMut(Span, u8, bool) -> Result<(), E>,
 ) -> Result<(), E> {
     for column in from.max(clip.0)..to.min(clip.1) {
-        let coverage = bounds.coverage(column * ONE);
-        let alpha = ((coverage * 255 + FULL / 2) >> (2 * FRAC)) as u8;
+        let alpha = opacity(bounds.coverage(column * ONE));
         if alpha > 0 {
             // Within the clip, whose columns are i32.
             let span = Span {
@@ -374,10 +504,16 @@ pub(crate) fn for_each_coverage_run<E>(
             boundary_columns(&bounds, y, (left_start, right_end), columns, &mut emit)?;
             continue;
         }
-        boundary_columns(&bounds, y, (left_start, left_end), columns, &mut emit)?;
+        // The common row: one piece each side, apart.
+        let lone = bounds.lefts == 1 && bounds.rights == 1;
+        if lone {
+            lone_piece_columns(&bounds.left[0], true, bounds.rows, y, columns, &mut emit)?;
+        } else {
+            boundary_columns(&bounds, y, (left_start, left_end), columns, &mut emit)?;
+        }
         let (from, to) = (left_end.max(column_start), right_start.min(column_end));
         if from < to {
-            let alpha = ((bounds.rows * ONE * 255 + FULL / 2) >> (2 * FRAC)) as u8;
+            let alpha = opacity(bounds.rows * ONE);
             if alpha > 0 {
                 let span = Span {
                     x: from as i32,
@@ -387,7 +523,11 @@ pub(crate) fn for_each_coverage_run<E>(
                 emit(span, alpha, false)?;
             }
         }
-        boundary_columns(&bounds, y, (right_start, right_end), columns, &mut emit)?;
+        if lone {
+            lone_piece_columns(&bounds.right[0], false, bounds.rows, y, columns, &mut emit)?;
+        } else {
+            boundary_columns(&bounds, y, (right_start, right_end), columns, &mut emit)?;
+        }
     }
     Ok(())
 }

@@ -166,11 +166,20 @@ where
         // the threshold takes its place.
         let bias = if self.dither { 0 } else { 1 << 15 };
         let planes = Planes::new(triangle.vertices, values, bias, window.top_left)?;
-        Some(visitor.visit(GouraudPainter {
+        let painter = GouraudPainter {
             planes: TrackedPlanes::new(planes),
             dither: self.dither,
-            corners: self.colors,
-        }))
+            color: PhantomData,
+        };
+        // Only anti-aliasing paints pixels outside the triangle: only it carries the range.
+        Some(if V::EDGE_PIXELS {
+            visitor.visit(EdgeClamped {
+                painter,
+                corners: self.colors,
+            })
+        } else {
+            visitor.visit(painter)
+        })
     }
 }
 
@@ -179,8 +188,38 @@ where
 struct GouraudPainter<C, const N: usize> {
     planes: TrackedPlanes<N>,
     dither: bool,
-    /// The vertices' colours, whose range bounds colours outside the triangle.
+    color: PhantomData<C>,
+}
+
+/// A Gouraud painter for anti-aliasing, whose edge pixels keep their colours within the
+/// vertices' range (see [`GouraudPainter::paint_clamped`]).
+struct EdgeClamped<C, const N: usize> {
+    painter: GouraudPainter<C, N>,
+    /// The vertices' colours.
     corners: [C; 3],
+}
+
+impl<C, const N: usize> Painter for EdgeClamped<C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    type Color = C;
+
+    #[inline(always)]
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        self.painter.paint(run, offset, target)
+    }
+
+    fn paint_edge<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        self.painter
+            .paint_clamped(run, offset, target, &self.corners)
+    }
 }
 
 impl<C, const N: usize> Painter for GouraudPainter<C, N>
@@ -207,13 +246,6 @@ where
             )
         }
     }
-
-    fn paint_edge<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = C>,
-    {
-        self.paint_clamped(run, offset, target)
-    }
 }
 
 impl<C, const N: usize> GouraudPainter<C, N>
@@ -224,11 +256,17 @@ where
     /// pixels, whose centres may lie outside the triangle, where the interpolated value could
     /// pass a channel's limits and wrap.
     #[inline(never)]
-    fn paint_clamped<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    fn paint_clamped<D>(
+        &self,
+        run: Span,
+        offset: Point,
+        target: &mut D,
+        corners: &[C; 3],
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
-        let channels = self.corners.map(ChannelColor::channels);
+        let channels = corners.map(ChannelColor::channels);
         let low: [u8; N] =
             core::array::from_fn(|k| channels.iter().map(|c| c[k]).min().unwrap_or(0));
         let high: [u8; N] =

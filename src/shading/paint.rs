@@ -81,6 +81,11 @@ pub trait PaintVisitor<C: PixelColor> {
     /// What drawing returns.
     type Output;
 
+    /// Whether the painter will be asked for pixels an edge crosses
+    /// ([`Painter::paint_edge`]): anti-aliasing's. Styles whose edge pixels need more than
+    /// their plain painter hand over another painter then.
+    const EDGE_PIXELS: bool = false;
+
     /// Draws with `painter`.
     fn visit<P: Painter<Color = C>>(self, painter: P) -> Self::Output;
 }
@@ -312,6 +317,7 @@ struct AntiAliasVisitor<'a, D> {
 
 impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
     type Output = Result<(), D::Error>;
+    const EDGE_PIXELS: bool = true;
 
     fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
         let target = self.target;

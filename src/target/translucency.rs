@@ -334,6 +334,16 @@ where
     }
 
     fn blend_solid(&mut self, area: &Rectangle, color: C, opacity: u8) -> Result<(), Infallible> {
+        if area.size.height == 1 {
+            // One row inside: anti-aliasing's edge pixels, one at a time.
+            let (y, x) = (area.top_left.y, area.top_left.x);
+            if let Some(row) = self.row_mut(y, x, area.size.width) {
+                for pixel in row {
+                    *pixel = S::store(blend(color, pixel.load(), opacity));
+                }
+                return Ok(());
+            }
+        }
         self.translucent(opacity).fill_solid(area, color)
     }
 }
