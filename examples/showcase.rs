@@ -29,9 +29,68 @@ use tinybmp::Bmp;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     shading::Fragment,
+    target::BlendTarget,
     texture::{Filter, ImageTexels, Texels},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
 };
+
+/// A gauge, aliased (left) and with anti-aliased edges (right): each edge pixel blended over
+/// the dial by the area of it the triangle covers.
+fn anti_aliased() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (112u32, 84u32);
+    let mut display = SimulatorDisplay::new(Size::new(2 * w + 2, h));
+    for (x0, smooth) in [(0, false), (w as i32 + 2, true)] {
+        let mut pixels = vec![Rgb565::new(3, 7, 6); (w * h) as usize];
+        let mut frame = Framebuffer::new(&mut pixels, w, h).unwrap();
+        for (triangle, color) in gauge(Point::new(56, 56), 50) {
+            let style = FlatStyle::new(color);
+            if smooth {
+                frame.draw_anti_aliased(&triangle, &style).unwrap();
+            } else {
+                triangle.into_styled(style).draw(&mut frame).unwrap();
+            }
+        }
+        for (i, c) in pixels.iter().enumerate() {
+            let p = Point::new(x0 + (i as u32 % w) as i32, (i as u32 / w) as i32);
+            Pixel(p, to_888(*c)).draw(&mut display).unwrap();
+        }
+    }
+    (display, OutputSettingsBuilder::new().scale(3).build())
+}
+
+/// A gauge's triangles around `center`: 13 tapered ticks on a 240-degree arc of `radius` and
+/// a needle, one triangle each (triangles sharing an edge would each blend their part of it,
+/// and the dial would show through the seam).
+fn gauge(center: Point, radius: i64) -> Vec<(Triangle, Rgb565)> {
+    // A point at `r` pixels from the centre, `turn` / 65536 of a turn clockwise from up.
+    let at = |turn: i64, r: i64| {
+        let (s, c) = (cube::sin(turn), cube::cos(turn));
+        let round = |v: i64| ((v + (1 << 15)) >> 16) as i32;
+        center + Point::new(round(r * s), round(-r * c))
+    };
+    let mut triangles = Vec::new();
+    for k in 0..13i64 {
+        let turn = -21_845 + k * 3_641; // -120 to +120 degrees, every 20
+        let (inner, width) = if k % 3 == 0 {
+            (radius - 14, 420)
+        } else {
+            (radius - 8, 300)
+        };
+        let color = if k >= 10 {
+            Rgb565::new(31, 12, 4)
+        } else {
+            Rgb565::new(26, 54, 26)
+        };
+        let (a, b) = (at(turn - width, radius), at(turn + width, radius));
+        triangles.push((Triangle::new(a, b, at(turn, inner)), color));
+    }
+    // The needle, 35 degrees past noon.
+    let needle = 6_371;
+    let tip = at(needle, radius - 4);
+    let (left, right) = (at(needle - 16_384, 4), at(needle + 16_384, 4));
+    triangles.push((Triangle::new(left, tip, right), Rgb565::new(31, 40, 0)));
+    triangles
+}
 
 /// Draws an `Rgb565` framebuffer's pixels into a new display of its size.
 fn show(pixels: &[Rgb565], width: u32) -> SimulatorDisplay<Rgb888> {
@@ -89,6 +148,11 @@ const SCENES: &[Scene] = &[
         name: "translucent",
         about: "translucent triangles over a Gouraud wheel: a HUD panel and a fan, each pixel blended once",
         render: translucent,
+    },
+    Scene {
+        name: "anti_aliased",
+        about: "a gauge's ticks and needle, aliased (left) and anti-aliased by exact coverage (right)",
+        render: anti_aliased,
     },
     Scene {
         name: "shader",
