@@ -67,6 +67,11 @@ pub enum Error {
     },
     /// A scene with depth-tested triangles rendered by bands without a depth band.
     BandDepth,
+    /// A scene with translucent or anti-aliased triangles rendered by
+    /// [`Bands::render`](crate::band::Bands::render), which draws opaque triangles only (its
+    /// code stays small): [`Bands::render_blended`](crate::band::Bands::render_blended) draws
+    /// them.
+    BandBlending,
     /// A texture side is zero or beyond [`MAX_TEXTURE_SIDE`](crate::texture::MAX_TEXTURE_SIDE),
     /// or an image gives no texels.
     TextureSize {
@@ -111,6 +116,10 @@ impl fmt::Display for Error {
             Self::BandDepth => write!(
                 f,
                 "the scene has depth-tested triangles but the bands have no depth band"
+            ),
+            Self::BandBlending => write!(
+                f,
+                "the scene has translucent or anti-aliased triangles: render it with render_blended"
             ),
             Self::TextureSize { width, height } => write!(
                 f,

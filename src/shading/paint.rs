@@ -300,19 +300,39 @@ where
     D: BlendTarget<Color = S::Color>,
 {
     let window = target.bounding_box();
+    draw_anti_aliased_in(triangle, style, target, &window, Point::zero())
+}
+
+/// [`draw_anti_aliased`] with interpolation set up for `setup` into a target whose pixel
+/// `(x, y)` is the screen's `(x, y) + offset`, as [`draw_plain_in`] (band rendering).
+pub(crate) fn draw_anti_aliased_in<S, D>(
+    triangle: &Triangle,
+    style: &S,
+    target: &mut D,
+    setup: &Rectangle,
+    offset: Point,
+) -> Result<(), D::Error>
+where
+    S: TriangleStyle,
+    D: BlendTarget<Color = S::Color>,
+{
+    let window = on_screen(target.bounding_box(), offset);
     let visitor = AntiAliasVisitor {
         target,
         triangle,
         window,
+        offset,
     };
-    style.paint(triangle, &window, visitor).unwrap_or(Ok(()))
+    style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
 }
 
 /// Walks the triangle's area coverage and paints every run, blended by its coverage.
 struct AntiAliasVisitor<'a, D> {
     target: &'a mut D,
     triangle: &'a Triangle,
+    /// Where runs are drawn, in screen coordinates.
     window: Rectangle,
+    offset: Point,
 }
 
 impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
@@ -320,16 +340,16 @@ impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
     const EDGE_PIXELS: bool = true;
 
     fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
-        let target = self.target;
+        let (target, offset) = (self.target, self.offset);
         for_each_area_run(self.triangle, &self.window, |run, coverage, edge| {
             let mut blended = Blended {
                 target: &mut *target,
                 opacity: coverage,
             };
             if edge {
-                painter.paint_edge(run, Point::zero(), &mut blended)
+                painter.paint_edge(run, offset, &mut blended)
             } else {
-                painter.paint(run, Point::zero(), &mut blended)
+                painter.paint(run, offset, &mut blended)
             }
         })
     }
