@@ -48,6 +48,9 @@ pub enum Mode {
     /// Gouraud at half opacity over the frame (`Framebuffer::translucent`): every pixel read,
     /// blended and written. Minus `Gouraud`, what translucency costs.
     Translucent,
+    /// Gouraud with ordered dithering (`GouraudStyle::with_dither`). Minus `Gouraud`, what
+    /// dithering costs.
+    GouraudDither,
     /// Flat with anti-aliased edges (`BlendTarget::draw_anti_aliased`): edge pixels blended by
     /// their exact coverage. Minus `Flat`, what anti-aliasing costs.
     AntiAliased,
@@ -55,7 +58,7 @@ pub enum Mode {
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 8] = [
+    pub const ALL: [Mode; 9] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -63,6 +66,7 @@ impl Mode {
         Mode::TexBilinear,
         Mode::Band,
         Mode::Translucent,
+        Mode::GouraudDither,
         Mode::AntiAliased,
     ];
 
@@ -76,6 +80,7 @@ impl Mode {
             Mode::TexBilinear => "tex-bilinear",
             Mode::Band => "band",
             Mode::Translucent => "translucent",
+            Mode::GouraudDither => "gouraud-dither",
             Mode::AntiAliased => "aa-flat",
         }
     }
@@ -84,7 +89,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 32] = [
+pub const EXPECTED: [(Mode, Scene, u32); 36] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -113,6 +118,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 32] = [
     (Mode::Translucent, Scene::Small, 0x4bfeb1ac),
     (Mode::Translucent, Scene::Mesh, 0xb36319e7),
     (Mode::Translucent, Scene::Scene200, 0x474f6d43),
+    (Mode::GouraudDither, Scene::Big, 0xd169215a),
+    (Mode::GouraudDither, Scene::Small, 0x11095c64),
+    (Mode::GouraudDither, Scene::Mesh, 0x496e289e),
+    (Mode::GouraudDither, Scene::Scene200, 0x4be66455),
     (Mode::AntiAliased, Scene::Big, 0xcd0449bf),
     (Mode::AntiAliased, Scene::Small, 0x5307ae13),
     (Mode::AntiAliased, Scene::Mesh, 0x0625bc47),
@@ -189,12 +198,13 @@ pub fn draw<const N: usize>(
 ) {
     match mode {
         Mode::Flat => draw_flat(triangles, frame),
-        Mode::Gouraud => draw_gouraud(triangles, frame),
+        Mode::Gouraud => draw_gouraud(triangles, frame, false),
         Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths),
         Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest),
         Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear),
         Mode::Band => draw_bands(triangles, frame, work),
         Mode::Translucent => draw_translucent(triangles, frame),
+        Mode::GouraudDither => draw_gouraud(triangles, frame, true),
         Mode::AntiAliased => draw_anti_aliased(triangles, frame),
     }
 }
@@ -225,8 +235,12 @@ fn draw_flat(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
     draw_each(triangles, frame, |t| FlatStyle::new(t.color));
 }
 
-fn draw_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
-    draw_each(triangles, frame, |t| GouraudStyle::new(t.vertex_colors));
+/// Gouraud, dithered or not: one function for both, so that adding the dithered mode does not
+/// change how the plain one is compiled.
+fn draw_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>, dither: bool) {
+    draw_each(triangles, frame, |t| {
+        GouraudStyle::new(t.vertex_colors).with_dither(dither)
+    });
 }
 
 /// Draws each triangle with the style `style_of` gives it: one function per style.
