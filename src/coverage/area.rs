@@ -337,40 +337,55 @@ fn opacity(coverage: i64) -> u8 {
 /// (`left_side`) or left of it, of a strip `rows` high. Columns the piece crosses whole, all
 /// but its first and last, take equal steps of rows: their coverage is stepped, not solved.
 #[inline]
-fn lone_piece_columns<E>(
+fn lone_piece_columns<K: CoverageSink>(
     piece: &Piece,
     left_side: bool,
     rows: i64,
-    y: i32,
     clip: (i64, i64),
-    emit: &mut impl FnMut(Span, u8, bool) -> Result<(), E>,
-) -> Result<(), E> {
+    run: &mut EdgeRun,
+    sink: &mut K,
+) -> Result<(), K::Error> {
     let first = piece.left.div_euclid(ONE);
     let end = (piece.right + ONE - 1).div_euclid(ONE);
-    let mut put = |column: i64, area_left: i64| -> Result<(), E> {
+    let mut put = |column: i64, area_left: i64| -> Result<(), K::Error> {
         let coverage = if left_side {
             rows * ONE - area_left
         } else {
             area_left
         };
-        let alpha = opacity(coverage.clamp(0, FULL));
-        if alpha > 0 && column >= clip.0 && column < clip.1 {
-            let span = Span {
-                x: column as i32,
-                y,
-                len: 1,
-            };
-            emit(span, alpha, true)?;
+        if column >= clip.0 && column < clip.1 {
+            run.push(column, opacity(coverage.clamp(0, FULL)), sink)?;
         }
         Ok(())
     };
-    if end - first <= 2 {
-        for column in first..end {
-            put(column, piece.area_left_of(column * ONE))?;
-        }
+    // The first and the last column, in 32-bit arithmetic: within a column of the piece's
+    // ends (`Piece::area_left_of` without its general cases).
+    let rows32 = piece.rows as i32;
+    let first_x = first * ONE;
+    if end <= first {
+        // Vertical, on a column boundary: it crosses no column.
         return Ok(());
     }
-    put(first, piece.area_left_of(first * ONE))?;
+    if end - first == 1 {
+        // Inside one column: a trapezoid the piece's height, its mean depth into the column.
+        let depth = (piece.left + piece.right - 2 * first_x) as i32;
+        return put(first, i64::from(rows32 * depth / 2));
+    }
+    let leave = first_x + ONE;
+    let inside = piece.rows_left_of(leave) as i32;
+    let depth = (piece.left + leave - 2 * first_x) as i32;
+    put(
+        first,
+        i64::from((rows32 - inside) * ONE as i32 + inside * depth / 2),
+    )?;
+    let last_x = (end - 1) * ONE;
+    let last = || {
+        let before = piece.rows_left_of(last_x) as i32;
+        i64::from((rows32 - before) * (piece.right - last_x) as i32 / 2)
+    };
+    if end - first == 2 {
+        return put(end - 1, last());
+    }
     // Middle columns: rows left of the column's left side, in 2^-32 units, step by a column's
     // worth each time.
     let (from, to) = ((first + 1).max(clip.0), (end - 1).min(clip.1));
@@ -386,45 +401,104 @@ fn lone_piece_columns<E>(
             rows_before = rows_after;
         }
     }
-    put(end - 1, piece.area_left_of((end - 1) * ONE))
+    put(end - 1, last())
 }
 
-/// Emits, pixel by pixel, the covered columns `from..to` of row `y` within `clip` (columns
-/// `clip.0..clip.1`).
-fn boundary_columns<E>(
+/// Emits the columns `from..to` of the row within `clip` (columns `clip.0..clip.1`), each
+/// solved from every piece.
+fn boundary_columns<K: CoverageSink>(
     bounds: &RowBoundaries,
-    y: i32,
     (from, to): (i64, i64),
     clip: (i64, i64),
-    emit: &mut impl FnMut(Span, u8, bool) -> Result<(), E>,
-) -> Result<(), E> {
+    run: &mut EdgeRun,
+    sink: &mut K,
+) -> Result<(), K::Error> {
     for column in from.max(clip.0)..to.min(clip.1) {
-        let alpha = opacity(bounds.coverage(column * ONE));
-        if alpha > 0 {
-            // Within the clip, whose columns are i32.
-            let span = Span {
-                x: column as i32,
-                y,
-                len: 1,
-            };
-            emit(span, alpha, true)?;
-        }
+        run.push(column, opacity(bounds.coverage(column * ONE)), sink)?;
     }
     Ok(())
 }
 
-/// Calls `emit` for every run of pixels of `triangle` inside `clip` that its area covers,
-/// top to bottom and left to right, with the run's coverage (1 to 255 of 255) and whether
-/// it is a boundary pixel (a run of one, crossed by an edge) rather than a row's interior.
+/// Receives a triangle's coverage, row by row from the top.
+pub(crate) trait CoverageSink {
+    /// What the sink can fail with; the first error stops the walk.
+    type Error;
+
+    /// A row's pixels between its edges, all covered `coverage` (1 to 255).
+    fn interior(&mut self, span: Span, coverage: u8) -> Result<(), Self::Error>;
+
+    /// Pixels edges cross, from `(x, y)` rightwards, one coverage each (1 to 255).
+    fn edge(&mut self, x: i32, y: i32, coverages: &[u8]) -> Result<(), Self::Error>;
+}
+
+/// Most pixels of one edge run.
+const RUN: usize = 32;
+
+/// Gathers a row's consecutive edge pixels, so that each run reaches the sink in one call.
+struct EdgeRun {
+    x: i64,
+    y: i32,
+    len: usize,
+    coverages: [u8; RUN],
+}
+
+impl EdgeRun {
+    fn new(y: i32) -> Self {
+        Self {
+            x: 0,
+            y,
+            len: 0,
+            coverages: [0; RUN],
+        }
+    }
+
+    /// Adds column `column` (to the right of those before) with its coverage.
+    #[inline(always)]
+    fn push<K: CoverageSink>(
+        &mut self,
+        column: i64,
+        coverage: u8,
+        sink: &mut K,
+    ) -> Result<(), K::Error> {
+        if coverage == 0 {
+            // Uncovered pixels are not drawn: a display may not be read, only written.
+            return self.flush(sink);
+        }
+        if self.len == RUN || (self.len > 0 && column != self.x + self.len as i64) {
+            self.flush(sink)?;
+        }
+        if self.len == 0 {
+            self.x = column;
+        }
+        self.coverages[self.len] = coverage;
+        self.len += 1;
+        Ok(())
+    }
+
+    /// Hands the gathered pixels to `sink`.
+    #[inline]
+    fn flush<K: CoverageSink>(&mut self, sink: &mut K) -> Result<(), K::Error> {
+        if self.len > 0 {
+            // Within the clip, whose columns are i32.
+            let x = self.x as i32;
+            let len = core::mem::replace(&mut self.len, 0);
+            sink.edge(x, self.y, &self.coverages[..len])?;
+        }
+        Ok(())
+    }
+}
+
+/// Hands `sink` every pixel of `triangle` inside `clip` that its area covers, top to bottom
+/// and left to right: runs of edge pixels with a coverage each, and each row's interior.
 ///
 /// Coverage is the area of the pixel's square (side 1, centred on the pixel) inside the
 /// triangle, within 1/256 of exact before rounding; pixels fully inside get 255. Degenerate triangles cover
 /// nothing.
-pub(crate) fn for_each_coverage_run<E>(
+pub(crate) fn walk_coverage<K: CoverageSink>(
     triangle: &Triangle,
     clip: &Rectangle,
-    mut emit: impl FnMut(Span, u8, bool) -> Result<(), E>,
-) -> Result<(), E> {
+    sink: &mut K,
+) -> Result<(), K::Error> {
     if triangle.is_degenerate() || clip.is_zero_sized() {
         return Ok(());
     }
@@ -486,48 +560,64 @@ pub(crate) fn for_each_coverage_run<E>(
     let first_row = polygon[top].y.div_euclid(ONE).max(row_start);
     let last_row = (polygon[bottom].y + ONE - 1).div_euclid(ONE).min(row_end);
     let (mut left, mut right) = (Chain::new(left, first_row), Chain::new(right, first_row));
+    // Reused from row to row: each row overwrites what it reads.
+    let mut bounds = RowBoundaries::default();
+    let mut run = EdgeRun::new(0);
     for row in first_row..last_row {
         let strip = row * ONE;
-        let mut bounds = RowBoundaries::default();
         bounds.lefts = left.pieces(strip, &mut bounds.left);
         bounds.rights = right.pieces(strip, &mut bounds.right);
         bounds.rows = bounds.left[..bounds.lefts].iter().map(|p| p.rows).sum();
         if bounds.lefts == 0 || bounds.rights == 0 || bounds.rows == 0 {
             continue;
         }
-        let (left_start, left_end) = RowBoundaries::columns(&bounds.left[..bounds.lefts]);
-        let (right_start, right_end) = RowBoundaries::columns(&bounds.right[..bounds.rights]);
-        let y = row as i32; // Within the clip, which is i32.
-        let columns = (column_start, column_end);
-        if left_end >= right_start {
-            // The boundaries share columns: every column is a boundary column.
-            boundary_columns(&bounds, y, (left_start, right_end), columns, &mut emit)?;
-            continue;
-        }
-        // The common row: one piece each side, apart.
-        let lone = bounds.lefts == 1 && bounds.rights == 1;
-        if lone {
-            lone_piece_columns(&bounds.left[0], true, bounds.rows, y, columns, &mut emit)?;
-        } else {
-            boundary_columns(&bounds, y, (left_start, left_end), columns, &mut emit)?;
-        }
-        let (from, to) = (left_end.max(column_start), right_start.min(column_end));
-        if from < to {
-            let alpha = opacity(bounds.rows * ONE);
-            if alpha > 0 {
-                let span = Span {
-                    x: from as i32,
-                    y,
-                    len: (to - from) as u32,
-                };
-                emit(span, alpha, false)?;
-            }
-        }
-        if lone {
-            lone_piece_columns(&bounds.right[0], false, bounds.rows, y, columns, &mut emit)?;
-        } else {
-            boundary_columns(&bounds, y, (right_start, right_end), columns, &mut emit)?;
-        }
+        // Within the clip, whose rows are i32.
+        run.y = row as i32;
+        row_coverage(&bounds, (column_start, column_end), &mut run, sink)?;
     }
     Ok(())
+}
+
+/// Hands `sink` one row's coverage within columns `clip.0..clip.1`: the left edge's columns,
+/// the interior, the right edge's columns.
+#[inline]
+fn row_coverage<K: CoverageSink>(
+    bounds: &RowBoundaries,
+    clip: (i64, i64),
+    run: &mut EdgeRun,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let (left_start, left_end) = RowBoundaries::columns(&bounds.left[..bounds.lefts]);
+    let (right_start, right_end) = RowBoundaries::columns(&bounds.right[..bounds.rights]);
+    if left_end >= right_start {
+        // The boundaries share columns: every column is a boundary column.
+        boundary_columns(bounds, (left_start, right_end), clip, run, sink)?;
+        return run.flush(sink);
+    }
+    // The common row: one piece each side, apart.
+    let lone = bounds.lefts == 1 && bounds.rights == 1;
+    if lone {
+        lone_piece_columns(&bounds.left[0], true, bounds.rows, clip, run, sink)?;
+    } else {
+        boundary_columns(bounds, (left_start, left_end), clip, run, sink)?;
+    }
+    run.flush(sink)?;
+    let (from, to) = (left_end.max(clip.0), right_start.min(clip.1));
+    if from < to {
+        let alpha = opacity(bounds.rows * ONE);
+        if alpha > 0 {
+            let span = Span {
+                x: from as i32,
+                y: run.y,
+                len: (to - from) as u32,
+            };
+            sink.interior(span, alpha)?;
+        }
+    }
+    if lone {
+        lone_piece_columns(&bounds.right[0], false, bounds.rows, clip, run, sink)?;
+    } else {
+        boundary_columns(bounds, (right_start, right_end), clip, run, sink)?;
+    }
+    run.flush(sink)
 }

@@ -16,7 +16,7 @@ use embedded_graphics::{
 
 pub use fill_rule::FillRule;
 
-pub(crate) use area::for_each_coverage_run as for_each_area_run;
+pub(crate) use area::{walk_coverage, CoverageSink};
 
 /// Calls `emit` with every run of pixels inside `clip` that `triangle` covers in part or in
 /// whole, and how much: the area of each pixel's square (side 1, centred on the pixel) inside
@@ -62,7 +62,33 @@ pub fn for_each_coverage_run<E, F>(
 where
     F: FnMut(Span, u8) -> Result<(), E>,
 {
-    area::for_each_coverage_run(triangle, clip, |span, coverage, _| emit(span, coverage))
+    area::walk_coverage(triangle, clip, &mut PixelRuns(&mut emit))
+}
+
+/// Hands on coverage as [`for_each_coverage_run`] promises: edge pixels one at a time,
+/// uncovered ones left out.
+struct PixelRuns<F>(F);
+
+impl<E, F: FnMut(Span, u8) -> Result<(), E>> CoverageSink for PixelRuns<F> {
+    type Error = E;
+
+    fn interior(&mut self, span: Span, coverage: u8) -> Result<(), E> {
+        (self.0)(span, coverage)
+    }
+
+    fn edge(&mut self, x: i32, y: i32, coverages: &[u8]) -> Result<(), E> {
+        for (k, &coverage) in coverages.iter().enumerate() {
+            if coverage > 0 {
+                let span = Span {
+                    x: x + k as i32,
+                    y,
+                    len: 1,
+                };
+                (self.0)(span, coverage)?;
+            }
+        }
+        Ok(())
+    }
 }
 
 use crate::{

@@ -15,7 +15,7 @@ use embedded_graphics::{
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
-    coverage::{for_each_area_run, walk, FillRule, Span, SpanSink},
+    coverage::{walk, walk_coverage, CoverageSink, FillRule, Span, SpanSink},
     geometry::Triangle,
     target::BlendTarget,
 };
@@ -288,7 +288,7 @@ where
 }
 
 /// Draws `triangle` with `style` into `target` with anti-aliased edges: every pixel blended by
-/// the area of its square the triangle covers (see [`for_each_area_run`]).
+/// the area of its square the triangle covers (see [`walk_coverage`]).
 #[inline]
 pub(crate) fn draw_anti_aliased<S, D>(
     triangle: &Triangle,
@@ -340,18 +340,101 @@ impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
     const EDGE_PIXELS: bool = true;
 
     fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
-        let (target, offset) = (self.target, self.offset);
-        for_each_area_run(self.triangle, &self.window, |run, coverage, edge| {
-            let mut blended = Blended {
-                target: &mut *target,
-                opacity: coverage,
-            };
-            if edge {
-                painter.paint_edge(run, offset, &mut blended)
-            } else {
-                painter.paint(run, offset, &mut blended)
+        let mut sink = PaintCoverage {
+            target: self.target,
+            painter,
+            offset: self.offset,
+        };
+        walk_coverage(self.triangle, &self.window, &mut sink)
+    }
+}
+
+/// Paints coverage as it comes: interiors through the painter as usual, edge runs through its
+/// edge painting, each pixel blended by its own coverage.
+struct PaintCoverage<'a, D, P> {
+    target: &'a mut D,
+    painter: P,
+    offset: Point,
+}
+
+impl<D, P> CoverageSink for PaintCoverage<'_, D, P>
+where
+    D: BlendTarget,
+    P: Painter<Color = D::Color>,
+{
+    type Error = D::Error;
+
+    fn interior(&mut self, span: Span, coverage: u8) -> Result<(), D::Error> {
+        let mut blended = Blended {
+            target: &mut *self.target,
+            opacity: coverage,
+        };
+        self.painter.paint(span, self.offset, &mut blended)
+    }
+
+    fn edge(&mut self, x: i32, y: i32, coverages: &[u8]) -> Result<(), D::Error> {
+        let span = Span {
+            x,
+            y,
+            len: coverages.len() as u32,
+        };
+        let mut blended = BlendedEach {
+            target: &mut *self.target,
+            coverages,
+            first: x.wrapping_sub(self.offset.x),
+        };
+        self.painter.paint_edge(span, self.offset, &mut blended)
+    }
+}
+
+/// A [`BlendTarget`] seen as a plain target for one run of pixels, each blended at its own
+/// opacity: `coverages[k]` for the run's `k`-th pixel.
+struct BlendedEach<'t, 'c, D> {
+    target: &'t mut D,
+    coverages: &'c [u8],
+    /// The target column of the run's first pixel.
+    first: i32,
+}
+
+impl<D: BlendTarget> embedded_graphics::geometry::Dimensions for BlendedEach<'_, '_, D> {
+    fn bounding_box(&self) -> Rectangle {
+        self.target.bounding_box()
+    }
+}
+
+impl<D: BlendTarget> DrawTarget for BlendedEach<'_, '_, D> {
+    type Color = D::Color;
+    type Error = D::Error;
+
+    /// Painters fill runs; single pixels take the coverage of their place in the run.
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = embedded_graphics::Pixel<D::Color>>,
+    {
+        for embedded_graphics::Pixel(at, color) in pixels {
+            let k = at.x.wrapping_sub(self.first) as u32 as usize;
+            if let Some(&coverage) = self.coverages.get(k) {
+                let area = Rectangle::new(at, Size::new(1, 1));
+                self.target
+                    .blend_contiguous(&area, core::iter::once(color), coverage)?;
             }
-        })
+        }
+        Ok(())
+    }
+
+    #[inline]
+    fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = D::Color>,
+    {
+        let pixels = colors.into_iter().zip(self.coverages.iter().copied());
+        self.target.blend_each(area, pixels)
+    }
+
+    #[inline]
+    fn fill_solid(&mut self, area: &Rectangle, color: D::Color) -> Result<(), D::Error> {
+        let pixels = self.coverages.iter().map(|&coverage| (color, coverage));
+        self.target.blend_each(area, pixels)
     }
 }
 

@@ -14,7 +14,10 @@
 use core::convert::Infallible;
 
 use embedded_graphics::{
-    draw_target::DrawTarget, geometry::Dimensions, primitives::Rectangle, Pixel,
+    draw_target::DrawTarget,
+    geometry::{Dimensions, Point},
+    primitives::Rectangle,
+    Pixel,
 };
 
 use super::{Framebuffer, StoredPixel};
@@ -98,6 +101,44 @@ pub trait BlendTarget: DrawTarget<Color: ChannelColor> {
     ) -> Result<(), Self::Error> {
         let pixels = area.size.width as usize * area.size.height as usize;
         self.blend_contiguous(area, core::iter::repeat_n(color, pixels), opacity)
+    }
+
+    /// Blends each colour of `pixels` over the pixels of `area` (row by row) at the opacity
+    /// paired with it: anti-aliasing's edge pixels, each at its coverage. Pixels outside the
+    /// target are skipped.
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*, primitives::Rectangle};
+    /// use trirast::{target::BlendTarget, Framebuffer};
+    ///
+    /// let mut pixels = [Gray8::BLACK; 3];
+    /// let mut frame = Framebuffer::new(&mut pixels, 3, 1)?;
+    /// let area = Rectangle::new(Point::zero(), Size::new(3, 1));
+    /// frame.blend_each(&area, [(Gray8::WHITE, 255), (Gray8::WHITE, 51), (Gray8::WHITE, 0)]).unwrap();
+    /// assert_eq!(pixels, [Gray8::WHITE, Gray8::new(51), Gray8::BLACK]);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    fn blend_each<I>(&mut self, area: &Rectangle, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = (Self::Color, u8)>,
+    {
+        let width = area.size.width.max(1);
+        for (k, (color, opacity)) in (0u32..).zip(pixels) {
+            let at = area.top_left
+                + embedded_graphics::geometry::Point::new((k % width) as i32, (k / width) as i32);
+            if k / width >= area.size.height {
+                break;
+            }
+            let one = Rectangle::new(at, embedded_graphics::geometry::Size::new(1, 1));
+            self.blend_contiguous(&one, core::iter::once(color), opacity)?;
+        }
+        Ok(())
     }
 
     /// Draws `triangle` with `style` (any of the crate's styles) with anti-aliased edges:
@@ -333,6 +374,34 @@ where
         self.translucent(opacity).fill_contiguous(area, colors)
     }
 
+    fn blend_each<I>(&mut self, area: &Rectangle, pixels: I) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = (C, u8)>,
+    {
+        if area.size.height == 1 {
+            // One row inside: anti-aliasing's edge runs.
+            let (y, x) = (area.top_left.y, area.top_left.x);
+            if let Some(row) = self.row_mut(y, x, area.size.width) {
+                for (pixel, (color, opacity)) in row.iter_mut().zip(pixels) {
+                    *pixel = S::store(blend(color, pixel.load(), opacity));
+                }
+                return Ok(());
+            }
+        }
+        // Partly outside, or several rows: pixel by pixel.
+        let width = area.size.width.max(1);
+        for (k, (color, opacity)) in (0u32..).zip(pixels) {
+            if k / width >= area.size.height {
+                break;
+            }
+            let at = area.top_left + Point::new((k % width) as i32, (k / width) as i32);
+            if let Some(pixel) = self.pixel_mut(at) {
+                *pixel = S::store(blend(color, pixel.load(), opacity));
+            }
+        }
+        Ok(())
+    }
+
     fn blend_solid(&mut self, area: &Rectangle, color: C, opacity: u8) -> Result<(), Infallible> {
         if area.size.height == 1 {
             // One row inside: anti-aliasing's edge pixels, one at a time.
@@ -353,6 +422,15 @@ where
     C: ChannelColor,
     S: StoredPixel<C>,
 {
+    fn blend_each<I>(&mut self, area: &Rectangle, pixels: I) -> Result<(), Infallible>
+    where
+        I: IntoIterator<Item = (C, u8)>,
+    {
+        let opacity = self.opacity;
+        let pixels = pixels.into_iter().map(|(c, o)| (c, combined(o, opacity)));
+        self.frame.blend_each(area, pixels)
+    }
+
     fn blend_contiguous<I>(
         &mut self,
         area: &Rectangle,
@@ -514,6 +592,19 @@ where
         self.target.fill_contiguous(
             area,
             colors.into_iter().map(|c| blend(c, background, opacity)),
+        )
+    }
+
+    fn blend_each<I>(&mut self, area: &Rectangle, pixels: I) -> Result<(), D::Error>
+    where
+        I: IntoIterator<Item = (D::Color, u8)>,
+    {
+        let (background, over) = (self.background, self.opacity);
+        self.target.fill_contiguous(
+            area,
+            pixels
+                .into_iter()
+                .map(|(c, o)| blend(c, background, combined(o, over))),
         )
     }
 
