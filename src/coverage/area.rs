@@ -71,9 +71,16 @@ impl Edge {
         // The first row boundary at or below `a` and at or below the first row drawn.
         let y = (a.y.div_euclid(ONE) + i64::from(a.y.rem_euclid(ONE) != 0)) * ONE;
         let y = y.max(first_row * ONE);
-        let (x, remainder) = start_crossing(y - a.y, dx, dy);
+        let ((x, remainder), (step, step_remainder)) = if y - a.y == ONE / 2 {
+            // The usual start, half a row below a vertex at a pixel centre: the row step is
+            // twice the half-row one, so one division serves both.
+            let (half, rest) = floor_div(ONE / 2 * dx, dy);
+            let carry = i64::from(2 * rest >= dy);
+            ((half, rest), (2 * half + carry, 2 * rest - carry * dy))
+        } else {
+            (start_crossing(y - a.y, dx, dy), floor_div(ONE * dx, dy))
+        };
         let x = a.x + x;
-        let (step, step_remainder) = floor_div(ONE * dx, dy);
         let rows_per_column = if dx == 0 {
             u64::MAX
         } else if dy < 1 << 32 {
