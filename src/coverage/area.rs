@@ -81,8 +81,18 @@ impl Edge {
             (start_crossing(y - a.y, dx, dy), floor_div(ONE * dx, dy))
         };
         let x = a.x + x;
+        let (across, down) = (dx.unsigned_abs() >> FRAC, (dy as u64) >> FRAC);
+        let whole_pixels = (dx | dy) & (ONE - 1) == 0;
         let rows_per_column = if dx == 0 {
             u64::MAX
+        } else if whole_pixels && across < 1 << 16 && down < 1 << 16 {
+            // Vertices at pixel centres, under 2^16 pixels apart: the ratio in whole pixels,
+            // by two 16-bit digits of 32-bit division (a 64-bit one is a library call on
+            // every Cortex-M).
+            let (dx, dy) = (across as u32, down as u32);
+            let high = (dy << 16) / dx;
+            let low = (((dy << 16) % dx) << 16) / dx;
+            (u64::from(high) << 16) | u64::from(low)
         } else if dy < 1 << 32 {
             ((dy as u64) << 32) / dx.unsigned_abs()
         } else {
