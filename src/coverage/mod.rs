@@ -8,6 +8,7 @@
 mod area;
 mod edge;
 mod fill_rule;
+mod subpixel;
 
 use embedded_graphics::{
     geometry::{Point, Size},
@@ -17,6 +18,49 @@ use embedded_graphics::{
 pub use fill_rule::FillRule;
 
 pub(crate) use area::{walk_coverage, CoverageSink};
+pub(crate) use subpixel::walk_subpixel;
+
+/// Calls `emit` with every span of the sub-pixel `triangle` inside `clip`, top to bottom, one
+/// per row: pixel `(x, y)` is covered when the point `(x, y)` lies inside the exact triangle
+/// under `rule`, as [`for_each_span`] does for whole-pixel vertices (and, given those, with
+/// the same spans). Edges step by quotient and remainder, one division each; vertices may lie
+/// anywhere in [`SubPoint`](crate::geometry::SubPoint)'s range.
+///
+/// # Errors
+///
+/// The first error `emit` returns.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{prelude::*, primitives::Rectangle};
+/// use fixed::types::I24F8;
+/// use trirast::{coverage::{for_each_subpixel_span, Span}, geometry::{SubPixelTriangle, SubPoint}, FillRule};
+///
+/// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+/// // Rows 1 and 2 only: the top vertex lies between rows 0 and 1.
+/// let t = SubPixelTriangle::new(at(0.0, 0.5), at(8.0, 2.5), at(0.0, 2.5));
+/// let clip = Rectangle::new(Point::zero(), Size::new(16, 16));
+/// let mut spans = Vec::new();
+/// for_each_subpixel_span(&t, FillRule::TopLeft, &clip, |span| {
+///     spans.push(span);
+///     Ok::<(), ()>(())
+/// })?;
+/// assert_eq!(spans, [Span { x: 0, y: 1, len: 2 }, Span { x: 0, y: 2, len: 6 }]);
+/// # Ok::<(), ()>(())
+/// ```
+#[inline]
+pub fn for_each_subpixel_span<E, F>(
+    triangle: &crate::geometry::SubPixelTriangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    mut emit: F,
+) -> Result<(), E>
+where
+    F: FnMut(Span) -> Result<(), E>,
+{
+    walk_subpixel(triangle, rule, clip, &mut emit)
+}
 
 /// Calls `emit` with every run of pixels inside `clip` that `triangle` covers in part or in
 /// whole, and how much: the area of each pixel's square (side 1, centred on the pixel) inside

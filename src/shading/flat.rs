@@ -6,7 +6,10 @@ use super::{
     paint::{drawable_style, PaintVisitor, SolidPainter},
     TriangleStyle,
 };
-use crate::{coverage::FillRule, geometry::Triangle};
+use crate::{
+    coverage::{FillRule, Span},
+    geometry::Triangle,
+};
 
 /// Fills a triangle with one colour.
 ///
@@ -101,3 +104,51 @@ impl<C: PixelColor> TriangleStyle for FlatStyle<C> {
 }
 
 drawable_style!([C: PixelColor] FlatStyle<C>);
+
+impl<C: PixelColor> embedded_graphics::primitives::StyledDrawable<FlatStyle<C>>
+    for crate::geometry::SubPixelTriangle
+{
+    type Color = C;
+    type Output = ();
+
+    /// Draws the sub-pixel triangle's spans, one `fill_solid` each.
+    fn draw_styled<D>(&self, style: &FlatStyle<C>, target: &mut D) -> Result<(), D::Error>
+    where
+        D: embedded_graphics::draw_target::DrawTarget<Color = C>,
+    {
+        let clip = target.bounding_box();
+        let color = style.color;
+        crate::coverage::walk_subpixel(self, style.fill_rule, &clip, &mut |span: Span| {
+            target.fill_solid(&span.rectangle(), color)
+        })
+    }
+}
+
+impl<C: PixelColor> embedded_graphics::primitives::StyledDimensions<FlatStyle<C>>
+    for crate::geometry::SubPixelTriangle
+{
+    /// The pixels whose centres the vertices' box spans.
+    fn styled_bounding_box(&self, _style: &FlatStyle<C>) -> Rectangle {
+        subpixel_bounding_box(self)
+    }
+}
+
+/// The whole pixels between the vertices' extremes: every pixel the triangle can cover.
+pub(crate) fn subpixel_bounding_box(t: &crate::geometry::SubPixelTriangle) -> Rectangle {
+    let xs = t.vertices.map(|p| i64::from(p.x.to_bits()));
+    let ys = t.vertices.map(|p| i64::from(p.y.to_bits()));
+    let lo = |v: [i64; 3]| (v.iter().copied().min().unwrap_or(0) + 255).div_euclid(256);
+    let hi = |v: [i64; 3]| v.iter().copied().max().unwrap_or(0).div_euclid(256);
+    let (x0, y0, x1, y1) = (lo(xs), lo(ys), hi(xs), hi(ys));
+    if x1 < x0 || y1 < y0 {
+        return Rectangle::new(
+            embedded_graphics::geometry::Point::new(x0 as i32, y0 as i32),
+            embedded_graphics::geometry::Size::zero(),
+        );
+    }
+    // Within ±2^23: the coordinates and sizes fit.
+    Rectangle::new(
+        embedded_graphics::geometry::Point::new(x0 as i32, y0 as i32),
+        embedded_graphics::geometry::Size::new((x1 - x0 + 1) as u32, (y1 - y0 + 1) as u32),
+    )
+}

@@ -1,0 +1,298 @@
+//! Sub-pixel geometry: vertices with a fraction of a pixel, for smooth motion.
+
+use embedded_graphics::{
+    geometry::{Dimensions, Point},
+    primitives::{Primitive, Rectangle},
+    transform::Transform,
+};
+use fixed::types::{I16F16, I24F8};
+
+use super::{Orientation, Triangle};
+
+/// A point with 8 fraction bits: 1/256 of a pixel, as Direct3D's 16.8 vertices, over
+/// ±2^23 pixels. Pixel `(x, y)` is the point `(x, y)`, as for [`Point`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::prelude::*;
+/// use fixed::types::{I16F16, I24F8};
+/// use trirast::geometry::SubPoint;
+///
+/// let p = SubPoint::new(I24F8::from_num(2.5), I24F8::from_num(-1.25));
+/// assert_eq!(p.x.to_bits(), 640); // in 1/256 pixel
+/// assert_eq!(SubPoint::from(Point::new(3, 4)), SubPoint::new(I24F8::from_num(3), I24F8::from_num(4)));
+/// // From 16.16 (what `Viewport` works in), to the nearest 1/256.
+/// let q = SubPoint::from([I16F16::from_num(0.3), I16F16::from_num(7)]);
+/// assert_eq!(q.x.to_bits(), 77); // 0.3 * 256 = 76.8
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SubPoint {
+    /// Column, in pixels.
+    pub x: I24F8,
+    /// Row, in pixels (down).
+    pub y: I24F8,
+}
+
+impl SubPoint {
+    /// The point `(x, y)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::SubPoint;
+    ///
+    /// const P: SubPoint = SubPoint::new(I24F8::from_bits(384), I24F8::ZERO);
+    /// assert_eq!(P.x, I24F8::from_num(1.5));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(x: I24F8, y: I24F8) -> Self {
+        Self { x, y }
+    }
+
+    /// The point at pixel `p`, saturating at the type's range (±2^23 pixels).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::SubPoint;
+    ///
+    /// const P: SubPoint = SubPoint::from_point(Point::new(-2, 5));
+    /// assert_eq!((P.x, P.y), (I24F8::from_num(-2), I24F8::from_num(5)));
+    /// assert_eq!(SubPoint::from_point(Point::new(i32::MAX, 0)).x, I24F8::MAX);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_point(p: Point) -> Self {
+        Self {
+            x: I24F8::from_bits(p.x.saturating_mul(256)),
+            y: I24F8::from_bits(p.y.saturating_mul(256)),
+        }
+    }
+
+    /// The point nearest `[x, y]` (16.16, as [`Viewport`](super::Viewport) and
+    /// [`Fragment`](crate::shading::Fragment) use), halves rounded up.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I16F16;
+    /// use trirast::geometry::SubPoint;
+    ///
+    /// let p = SubPoint::from_fixed([I16F16::from_bits(0x0001_0080), I16F16::from_bits(-0x80)]);
+    /// assert_eq!((p.x.to_bits(), p.y.to_bits()), (257, 0)); // 1 + 1/512 rounds up; so does -1/512
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_fixed([x, y]: [I16F16; 2]) -> Self {
+        Self {
+            x: nearest_256th(x),
+            y: nearest_256th(y),
+        }
+    }
+}
+
+/// `v` to the nearest 1/256, halves up: 16 fraction bits to 8, the dropped bits' top one
+/// rounding (the shift floors, so negative halves go up too).
+const fn nearest_256th(v: I16F16) -> I24F8 {
+    I24F8::from_bits((v.to_bits() >> 8) + ((v.to_bits() >> 7) & 1))
+}
+
+impl From<Point> for SubPoint {
+    #[inline]
+    fn from(p: Point) -> Self {
+        Self::from_point(p)
+    }
+}
+
+impl From<[I16F16; 2]> for SubPoint {
+    #[inline]
+    fn from(p: [I16F16; 2]) -> Self {
+        Self::from_fixed(p)
+    }
+}
+
+impl From<[I24F8; 2]> for SubPoint {
+    #[inline]
+    fn from([x, y]: [I24F8; 2]) -> Self {
+        Self::new(x, y)
+    }
+}
+
+/// A triangle whose vertices have a fraction of a pixel (1/256): what moves slowly moves
+/// smoothly, instead of a pixel at a time. Pixel `(x, y)` is covered when the point `(x, y)`
+/// lies inside the exact triangle, under the fill rule (top-left unless chosen), as for
+/// [`Triangle`], which is the special case of whole-pixel vertices: a `SubPixelTriangle` with
+/// integer vertices draws exactly what that `Triangle` draws.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+/// use fixed::types::I24F8;
+/// use trirast::{geometry::{SubPixelTriangle, SubPoint}, FlatStyle};
+///
+/// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+/// // A quarter pixel right of whole coordinates: column 0's centres are outside, and the
+/// // hypotenuse reaches one column further on each row.
+/// let t = SubPixelTriangle::new(at(0.25, 0.0), at(4.25, 0.0), at(0.25, 4.0));
+/// let mut display = MockDisplay::new();
+/// t.into_styled(FlatStyle::new(BinaryColor::On)).draw(&mut display).unwrap();
+/// display.assert_pattern(&[" ####", " ### ", " ##  ", " #   "]);
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SubPixelTriangle {
+    /// The three vertices, in any order.
+    pub vertices: [SubPoint; 3],
+}
+
+impl SubPixelTriangle {
+    /// The triangle through `a`, `b` and `c`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::{SubPixelTriangle, SubPoint};
+    ///
+    /// const ZERO: SubPoint = SubPoint::new(I24F8::ZERO, I24F8::ZERO);
+    /// const T: SubPixelTriangle = SubPixelTriangle::new(ZERO, ZERO, ZERO);
+    /// assert!(T.is_degenerate());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(a: SubPoint, b: SubPoint, c: SubPoint) -> Self {
+        Self {
+            vertices: [a, b, c],
+        }
+    }
+
+    /// Twice the signed area in 1/65,536 pixel², exact: positive for clockwise triangles on
+    /// screen.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::{SubPixelTriangle, SubPoint};
+    ///
+    /// let p = |x: i32, y: i32| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
+    /// // Half a pixel by half a pixel, a right angle: area 1/8 pixel², doubled 1/4.
+    /// let t = SubPixelTriangle::new(p(0, 0), p(128, 0), p(0, 128));
+    /// assert_eq!(t.doubled_signed_area(), 128 * 128);
+    /// ```
+    #[must_use]
+    pub fn doubled_signed_area(&self) -> i128 {
+        let [a, b, c] = self
+            .vertices
+            .map(|p| (i128::from(p.x.to_bits()), i128::from(p.y.to_bits())));
+        (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
+    }
+
+    /// The winding of the vertices on screen, exactly.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use trirast::{geometry::SubPixelTriangle, Orientation, Triangle};
+    ///
+    /// let t = SubPixelTriangle::from(Triangle::new(Point::new(0, 0), Point::new(10, 0), Point::new(0, 10)));
+    /// assert_eq!(t.orientation(), Orientation::Clockwise);
+    /// ```
+    #[must_use]
+    pub fn orientation(&self) -> Orientation {
+        match self.doubled_signed_area().signum() {
+            1 => Orientation::Clockwise,
+            -1 => Orientation::CounterClockwise,
+            _ => Orientation::Degenerate,
+        }
+    }
+
+    /// True when the vertices are collinear or coincident; such triangles draw nothing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::{SubPixelTriangle, SubPoint};
+    ///
+    /// let p = |x: i32, y: i32| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
+    /// assert!(SubPixelTriangle::new(p(0, 0), p(1, 1), p(2, 2)).is_degenerate());
+    /// assert!(!SubPixelTriangle::new(p(0, 0), p(1, 0), p(0, 1)).is_degenerate());
+    /// ```
+    #[must_use]
+    pub fn is_degenerate(&self) -> bool {
+        self.doubled_signed_area() == 0
+    }
+}
+
+impl From<Triangle> for SubPixelTriangle {
+    /// The same triangle (vertices saturate at ±2^23 pixels).
+    #[inline]
+    fn from(t: Triangle) -> Self {
+        Self {
+            vertices: t.vertices.map(SubPoint::from_point),
+        }
+    }
+}
+
+impl Primitive for SubPixelTriangle {}
+
+impl Dimensions for SubPixelTriangle {
+    /// The pixels whose centres the vertices' box spans: every pixel the triangle can cover
+    /// (a zero-sized rectangle when it spans no pixel centre).
+    fn bounding_box(&self) -> Rectangle {
+        crate::shading::subpixel_bounding_box(self)
+    }
+}
+
+impl Transform for SubPixelTriangle {
+    /// Moves every vertex by `by` whole pixels, saturating at the type's range.
+    fn translate(&self, by: Point) -> Self {
+        let mut moved = *self;
+        moved.translate_mut(by);
+        moved
+    }
+
+    fn translate_mut(&mut self, by: Point) -> &mut Self {
+        let by = SubPoint::from_point(by);
+        for v in &mut self.vertices {
+            v.x = v.x.saturating_add(by.x);
+            v.y = v.y.saturating_add(by.y);
+        }
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fixed_conversion_rounds_to_nearest() {
+        for bits in [
+            -1000,
+            -129,
+            -128,
+            -127,
+            -1,
+            0,
+            1,
+            127,
+            128,
+            129,
+            1000,
+            65_536 * 300 + 77,
+        ] {
+            let got = SubPoint::from_fixed([I16F16::from_bits(bits), I16F16::ZERO]).x;
+            // Nearest multiple of 256 (in 2^-16), halves up.
+            let want = (2 * i64::from(bits) + 256).div_euclid(512);
+            assert_eq!(i64::from(got.to_bits()), want, "{bits}");
+        }
+    }
+}
