@@ -5,14 +5,21 @@
 
 mod common;
 
-use common::{jittered_grid, reference_covers, Rng, Rule};
-use embedded_graphics::{prelude::*, primitives::Rectangle};
-use fixed::types::I24F8;
+use common::{exact_plane, jittered_grid, reference_covers, window_points, Recorder, Rng, Rule};
+use embedded_graphics::{
+    pixelcolor::{Gray8, GrayColor, Rgb565},
+    prelude::*,
+    primitives::Rectangle,
+};
+use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
     coverage::{for_each_span, for_each_subpixel_span},
+    depth::{DepthBuffer, DepthTarget, DepthTest},
     geometry::{SubPixelTriangle, SubPoint},
-    Triangle,
+    target::BlendTarget,
+    texture::{Filter, Texels, Wrap},
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
 /// Vertex coordinates in 1/256 pixel, the type's whole range.
@@ -230,5 +237,174 @@ fn motion_is_monotonic() {
                 assert_eq!(hit, before, "{raw:?}: pixel {i}");
             }
         }
+    }
+}
+
+/// A random sub-pixel triangle over a 32 x 32 window at the origin: small, medium, slivers
+/// and larger than the window, and whether it is degenerate-free.
+fn styled_case(rng: &mut Rng) -> [(i32, i32); 3] {
+    loop {
+        let reach = [4, 20, 200][rng.range(0, 2) as usize] * 256;
+        let v = [(); 3].map(|()| {
+            (
+                rng.range(-reach, 32 * 256 + reach),
+                rng.range(-reach, 32 * 256 + reach),
+            )
+        });
+        if !sub(v).is_degenerate() {
+            return v;
+        }
+    }
+}
+
+/// Exact value at pixel `p` of the plane through `values` at the raw vertices `raw`, as
+/// `(numerator, denominator)`.
+fn exact_at(raw: [(i32, i32); 3], values: [i64; 3], p: Point) -> (i128, i128) {
+    let v = raw.map(|(x, y)| Point::new(x, y));
+    exact_plane(v, values, Point::new(p.x * 256, p.y * 256)).unwrap()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    /// Gouraud colours at the samples, within one level of the exact rational value; coverage
+    /// as the reference.
+    #[test]
+    fn gouraud_is_within_a_level(seed in any::<u64>()) {
+        let mut rng = Rng(seed);
+        let raw = styled_case(&mut rng);
+        let levels = [(); 3].map(|()| rng.range(0, 255) as u8);
+        let window = Rectangle::new(Point::zero(), Size::new(32, 32));
+        let mut target = Recorder::<Gray8>::new(window);
+        sub(raw)
+            .into_styled(GouraudStyle::new(levels.map(Gray8::new)))
+            .draw(&mut target)
+            .unwrap();
+        prop_assert_eq!(target.outside_writes, 0);
+        let v = raw.map(|(x, y)| Point::new(x, y));
+        for p in window_points(&window) {
+            let covered = reference_covers(v, Point::new(p.x * 256, p.y * 256), Rule::TopLeft);
+            prop_assert_eq!(target.writes_at(p), u32::from(covered), "coverage at {:?}", p);
+            if let Some(c) = target.get(p) {
+                let (n, d) = exact_at(raw, levels.map(i64::from), p);
+                let exact = n as f64 / d as f64;
+                prop_assert!((f64::from(c.luma()) - exact).abs() <= 1.0, "{:?} at {:?}: {} vs {:.3}", raw, p, c.luma(), exact);
+            }
+        }
+    }
+
+    /// Depths at the samples within one unit of the exact rational depth.
+    #[test]
+    fn depths_are_within_a_unit(seed in any::<u64>()) {
+        let mut rng = Rng(seed);
+        let raw = styled_case(&mut rng);
+        let depths = [(); 3].map(|()| rng.range(0, 65_535) as u16);
+        let (mut pixels, mut stored) = (vec![Gray8::BLACK; 32 * 32], vec![u16::MAX; 32 * 32]);
+        let mut frame = Framebuffer::new(&mut pixels, 32, 32).unwrap();
+        let mut zbuffer = DepthBuffer::new(&mut stored, 32, 32).unwrap();
+        let mut scene = DepthTarget::new(&mut frame, &mut zbuffer).unwrap().with_test(DepthTest::LessOrEqual);
+        scene.draw(&sub(raw), depths, &FlatStyle::new(Gray8::WHITE)).unwrap();
+        let v = raw.map(|(x, y)| Point::new(x, y));
+        for p in window_points(&Rectangle::new(Point::zero(), Size::new(32, 32))) {
+            let i = (p.y * 32 + p.x) as usize;
+            if reference_covers(v, Point::new(p.x * 256, p.y * 256), Rule::TopLeft) {
+                let (n, d) = exact_at(raw, depths.map(i64::from), p);
+                let exact = (n as f64 / d as f64).clamp(0.0, 65_535.0);
+                prop_assert!((f64::from(stored[i]) - exact).abs() <= 1.0, "{:?} at {:?}: {} vs {:.3}", raw, p, stored[i], exact);
+                prop_assert_eq!(pixels[i], Gray8::WHITE);
+            } else {
+                prop_assert_eq!(stored[i], u16::MAX);
+            }
+        }
+    }
+
+    /// Nearest texturing picks the texel of the exact coordinate, rounded half up, or the next
+    /// one where the coordinate lies within 2^-40 texel below its boundary (the interpolation's
+    /// rounding; sub-pixel vertices make the exact coordinates' denominators 2^16 larger than
+    /// whole-pixel ones, so boundaries can be that close).
+    #[test]
+    fn nearest_texels_are_the_exact_ones(seed in any::<u64>()) {
+        let mut rng = Rng(seed);
+        let raw = styled_case(&mut rng);
+        let size = (1 + rng.range(0, 7) as u32, 1 + rng.range(0, 7) as u32);
+        let texels: Vec<Gray8> = (0..size.0 * size.1).map(|i| Gray8::new((i * 37 % 251) as u8)).collect();
+        let texture = Texels::new(&texels, size.0, size.1).unwrap();
+        let coordinate = |rng: &mut Rng| I16F16::from_bits(rng.range(-20 << 16, 20 << 16));
+        let uv = [(); 3].map(|()| [coordinate(&mut rng), coordinate(&mut rng)]);
+        let wrap = if rng.range(0, 1) == 0 { Wrap::Clamp } else { Wrap::Repeat };
+        let window = Rectangle::new(Point::zero(), Size::new(32, 32));
+        let mut target = Recorder::<Gray8>::new(window);
+        let style = TextureStyle::new(texture, uv).with_wrap(wrap);
+        sub(raw).into_styled(style).draw(&mut target).unwrap();
+        let address = |t: i128, side: u32| match wrap {
+            Wrap::Repeat => t.rem_euclid(i128::from(side)) as u32,
+            Wrap::Clamp => t.clamp(0, i128::from(side) - 1) as u32,
+        };
+        for p in window_points(&window) {
+            let Some(c) = target.get(p) else { continue };
+            let axis = |k: usize| exact_at(raw, uv.map(|c| i64::from(c[k].to_bits())), p);
+            let ((nu, d), (nv, _)) = (axis(0), axis(1));
+            let d = d << 16;
+            // floor(t / d + 1/2), and the same a hair (2^-40 texel) higher.
+            let texel = |t: i128| {
+                let low = (2 * t + d).div_euclid(2 * d);
+                let high = (((2 * t + d) << 40) + 2 * d).div_euclid((2 * d) << 40);
+                (low, high)
+            };
+            let ((u0, u1), (v0, v1)) = (texel(nu), texel(nv));
+            let at = |u: i128, v: i128| texels[(address(v, size.1) * size.0 + address(u, size.0)) as usize];
+            let candidates = [at(u0, v0), at(u1, v0), at(u0, v1), at(u1, v1)];
+            prop_assert!(candidates.contains(&c), "{:?} at {:?}: {:?} not in {:?}", raw, p, c, candidates);
+        }
+    }
+}
+
+/// Sub-pixel triangles on whole pixels draw exactly what `Triangle` draws, in every style.
+#[test]
+fn whole_pixels_draw_bit_for_bit_in_every_style() {
+    let mut rng = Rng(4242);
+    let texels: Vec<Rgb565> = (0..16)
+        .map(|i| Rgb565::new(i as u8 * 2, 63 - i as u8 * 3, 7))
+        .collect();
+    let texture = Texels::new(&texels, 4, 4).unwrap();
+    for _ in 0..300 {
+        let p = [(); 3].map(|()| Point::new(rng.range(-40, 80), rng.range(-40, 80)));
+        let whole = Triangle::new(p[0], p[1], p[2]);
+        let t = SubPixelTriangle::from(whole);
+        let colors = [(); 3].map(|()| {
+            Rgb565::new(
+                rng.range(0, 31) as u8,
+                rng.range(0, 63) as u8,
+                rng.range(0, 31) as u8,
+            )
+        });
+        let uv = [(); 3].map(|()| {
+            [
+                I16F16::from_bits(rng.range(-600_000, 600_000)),
+                I16F16::from_bits(rng.range(-600_000, 600_000)),
+            ]
+        });
+        let render = |draw: &dyn Fn(&mut Framebuffer<'_, Rgb565>)| {
+            let mut pixels = vec![Rgb565::BLACK; 48 * 48];
+            let mut frame = Framebuffer::new(&mut pixels, 48, 48).unwrap();
+            draw(&mut frame);
+            pixels
+        };
+        let gouraud = GouraudStyle::new(colors).with_dither(rng.range(0, 1) == 1);
+        let textured = TextureStyle::new(texture, uv)
+            .with_filter(Filter::Bilinear)
+            .with_modulation(colors);
+        assert!(
+            render(&|f| whole.into_styled(gouraud).draw(f).unwrap())
+                == render(&|f| t.into_styled(gouraud).draw(f).unwrap())
+        );
+        assert!(
+            render(&|f| whole.into_styled(textured).draw(f).unwrap())
+                == render(&|f| t.into_styled(textured).draw(f).unwrap())
+        );
+        assert!(
+            render(&|f| f.draw_anti_aliased(&whole, &gouraud).unwrap())
+                == render(&|f| f.draw_anti_aliased(&t, &gouraud).unwrap())
+        );
     }
 }

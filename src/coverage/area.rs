@@ -437,7 +437,7 @@ fn boundary_columns<K: CoverageSink>(
 }
 
 /// Receives a triangle's coverage, row by row from the top.
-pub(crate) trait CoverageSink {
+pub trait CoverageSink {
     /// What the sink can fail with; the first error stops the walk.
     type Error;
 
@@ -516,7 +516,36 @@ pub(crate) fn walk_coverage<K: CoverageSink>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    if triangle.is_degenerate() || clip.is_zero_sized() {
+    let vertices = triangle
+        .vertices
+        .map(|p| (i64::from(p.x) * ONE, i64::from(p.y) * ONE));
+    walk_coverage_of(vertices, triangle.orientation(), clip, sink)
+}
+
+/// [`walk_coverage`] for a sub-pixel triangle.
+pub(crate) fn walk_subpixel_coverage<K: CoverageSink>(
+    triangle: &crate::geometry::SubPixelTriangle,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    // 1/256 pixel is 16 units of 1/4096.
+    let vertices = triangle.vertices.map(|p| {
+        (
+            i64::from(p.x.to_bits()) * (ONE / 256),
+            i64::from(p.y.to_bits()) * (ONE / 256),
+        )
+    });
+    walk_coverage_of(vertices, triangle.orientation(), clip, sink)
+}
+
+/// [`walk_coverage`] for vertices in 1/4096 pixel (pixel centres at whole pixels).
+fn walk_coverage_of<K: CoverageSink>(
+    vertices: [(i64, i64); 3],
+    orientation: crate::Orientation,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    if orientation == crate::Orientation::Degenerate || clip.is_zero_sized() {
         return Ok(());
     }
     // Pixels to process: the clip, within reach of the origin.
@@ -527,12 +556,13 @@ pub(crate) fn walk_coverage<K: CoverageSink>(
     if column_start >= column_end || row_start >= row_end {
         return Ok(());
     }
-    // Vertices as positions: up to 2^39 in magnitude, which each edge's set-up handles.
+    // Positions are shifted by half a pixel (pixel squares from whole units): up to 2^39 in
+    // magnitude, which each edge's set-up handles.
     let mut polygon = [Position { x: 0, y: 0 }; MAX_VERTICES];
-    for (position, p) in polygon.iter_mut().zip(triangle.vertices) {
+    for (position, (x, y)) in polygon.iter_mut().zip(vertices) {
         *position = Position {
-            x: i64::from(p.x) * ONE + ONE / 2,
-            y: i64::from(p.y) * ONE + ONE / 2,
+            x: x + ONE / 2,
+            y: y + ONE / 2,
         };
     }
     let len = 3;
@@ -568,7 +598,7 @@ pub(crate) fn walk_coverage<K: CoverageSink>(
     let (forwards, backwards) = (walk(true, &mut forward), walk(false, &mut backward));
     // Going forward from the top vertex leads down the right side when the triangle is
     // clockwise on screen (y down).
-    let clockwise = triangle.orientation() == crate::Orientation::Clockwise;
+    let clockwise = orientation == crate::Orientation::Clockwise;
     let (right, left) = if clockwise {
         (&forward[..forwards], &backward[..backwards])
     } else {

@@ -17,7 +17,7 @@ use embedded_graphics::{
 
 pub use fill_rule::FillRule;
 
-pub(crate) use area::{walk_coverage, CoverageSink};
+pub(crate) use area::{walk_coverage, walk_subpixel_coverage, CoverageSink};
 pub(crate) use subpixel::walk_subpixel;
 
 /// Calls `emit` with every span of the sub-pixel `triangle` inside `clip`, top to bottom, one

@@ -5,17 +5,17 @@ use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Re
 
 use super::{DepthBuffer, DepthTest};
 use crate::{
-    coverage::{walk_erased, FillRule, Span, SpanSink},
-    geometry::Triangle,
-    interpolate::{Planes, TrackedPlanes},
+    coverage::{FillRule, Span, SpanSink},
+    geometry::Shape,
+    interpolate::TrackedPlanes,
     shading::paint::{PaintVisitor, Painter},
 };
 
 /// Receives a style's painter and walks the triangle through the depth test.
-pub(super) struct DepthVisitor<'a, 'b, D> {
+pub(super) struct DepthVisitor<'a, 'b, G, D> {
     pub(super) target: &'a mut D,
     pub(super) buffer: &'a mut DepthBuffer<'b>,
-    pub(super) triangle: &'a Triangle,
+    pub(super) triangle: &'a G,
     pub(super) depths: [u16; 3],
     pub(super) rule: FillRule,
     /// Where spans are drawn (the target's box, which the buffer covers), in screen
@@ -29,15 +29,14 @@ pub(super) struct DepthVisitor<'a, 'b, D> {
     pub(super) offset: Point,
 }
 
-impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
+impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G, D> {
     type Output = Result<(), D::Error>;
 
     #[inline(always)]
     fn visit<P: Painter<Color = D::Color>>(self, painter: P) -> Self::Output {
         // Depths as 16.16 with half a unit of bias: truncation rounds to nearest.
         let values = self.depths.map(|d| [i64::from(d) << 16]);
-        let Some(depth) = Planes::new_in(self.triangle.vertices, values, 1 << 15, &self.setup)
-        else {
+        let Some(depth) = self.triangle.planes_in(values, 1 << 15, &self.setup) else {
             return Ok(());
         };
         let (flip, slack) = self.test.comparison();
@@ -52,7 +51,8 @@ impl<D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, D> {
             write: self.write,
             offset: self.offset,
         };
-        walk_erased(self.triangle, self.rule, &self.window, &mut sink)
+        self.triangle
+            .walk_spans_erased(self.rule, &self.window, &mut sink)
     }
 }
 

@@ -1,9 +1,11 @@
 //! Geometry: shapes without style, and the viewport mapping onto pixels.
 
+mod shape;
 mod subpixel;
 mod triangle;
 mod viewport;
 
+pub use shape::Shape;
 pub use subpixel::{SubPixelTriangle, SubPoint};
 pub use triangle::{Orientation, Triangle};
 pub use viewport::Viewport;

@@ -18,7 +18,7 @@ const STEP_BITS: u32 = 16;
 /// gradients rounded to 2^-SETUP per pixel, so rows never accumulate error. Along a span the values
 /// then step by [`Planes::step`] (2^-16 per pixel), additions only.
 #[derive(Copy, Clone, Debug)]
-pub(crate) struct Planes<const N: usize, const SETUP: u32 = 32> {
+pub struct Planes<const N: usize, const SETUP: u32 = 32> {
     origin: Point,
     /// Values at `origin`, in 2^-SETUP units.
     pub(crate) base: [i64; N],
@@ -77,6 +77,107 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         } else {
             Self::new_exact(vertices, values, bias, window.top_left)
         }
+    }
+
+    /// Plane equations as [`Planes::new`] for vertices in 1/256 pixel (a
+    /// [`SubPixelTriangle`](crate::geometry::SubPixelTriangle)'s): gradients per pixel rounded
+    /// as for whole-pixel vertices, the reference a whole pixel.
+    #[inline(always)]
+    pub(crate) fn new_subpixel(
+        vertices: [(i32, i32); 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
+            Self::new_small_subpixel(p0, values, bias, e)
+        } else {
+            Self::new_exact_subpixel(vertices, values, bias, reference)
+        }
+    }
+
+    /// [`Planes::new_in`] for vertices in 1/256 pixel: see [`Planes::new_subpixel`].
+    #[inline(always)]
+    pub(crate) fn new_subpixel_in(
+        vertices: [(i32, i32); 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        window: &Rectangle,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+        let small = e.iter().all(|d| d.unsigned_abs() < 1 << 15);
+        let pixel = Point::new(vertices[0].0 >> 8, vertices[0].1 >> 8);
+        if small && window.contains(pixel) {
+            Self::new_small_subpixel(p0, values, bias, e)
+        } else {
+            Self::new_exact_subpixel(vertices, values, bias, window.top_left)
+        }
+    }
+
+    /// [`Planes::new_small`] for vertices in 1/256 pixel under 2^15 units (128 pixels) apart:
+    /// the gradients per 1/256 pixel scaled to per pixel in the same rounding, and the values
+    /// moved from the first vertex to the whole pixel at or above-left of it.
+    #[inline(always)]
+    fn new_small_subpixel(
+        first: (i64, i64),
+        values: [[i64; N]; 3],
+        bias: i64,
+        e: [i64; 4],
+    ) -> Option<Self> {
+        let [ex1, ey1, ex2, ey2] = e;
+        let area = i64::from(ex1 as i32 * ey2 as i32 - ex2 as i32 * ey1 as i32);
+        if area == 0 {
+            return None;
+        }
+        let reciprocal = reciprocal_2_62(area.unsigned_abs());
+        // As in `new_small`, and 8 bits less of shift: 256 units to a pixel.
+        let shift = 62 - (SETUP - STEP_BITS) - 8;
+        let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
+        let origin = Point::new((first.0 >> 8) as i32, (first.1 >> 8) as i32);
+        let (fx, fy) = (first.0 & 255, first.1 & 255);
+        // floor(g * f / 256) for 0 <= f < 256, without a wider product.
+        let part = |g: i64, f: i64| (g >> 8).wrapping_mul(f) + (((g & 255) * f) >> 8);
+        let mut planes = Self::empty(origin);
+        let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
+        for k in 0..N {
+            let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
+            let [nx, ny] = numerators(a1 - a0, a2 - a0, e);
+            let (dx, dy) = (gradient(nx), gradient(ny));
+            planes.dx[k] = dx;
+            planes.dy[k] = dy;
+            // The origin lies (fx, fy) / 256 pixel up and left of the vertex.
+            let at_vertex = (a0 + bias) << (SETUP - STEP_BITS);
+            planes.base[k] = at_vertex
+                .wrapping_sub(part(dx, fx))
+                .wrapping_sub(part(dy, fy));
+        }
+        planes.finish();
+        Some(planes)
+    }
+
+    /// [`Planes::new_exact`] for vertices in 1/256 pixel.
+    #[cold]
+    #[inline(never)]
+    fn new_exact_subpixel(
+        vertices: [(i32, i32); 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Self> {
+        let mut planes = Self::empty(reference);
+        for k in 0..N {
+            let values = [values[0][k], values[1][k], values[2][k]];
+            let (base, dx, dy) =
+                exact_plane_subpixel(vertices, values, bias, reference, SETUP - STEP_BITS)?;
+            planes.base[k] = base;
+            planes.dx[k] = dx;
+            planes.dy[k] = dy;
+        }
+        planes.finish();
+        Some(planes)
     }
 
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
@@ -409,6 +510,46 @@ fn exact_plane(
     let dy = div_round(ny * scale, area) as i64;
     let offset = div_round((nx * rx + ny * ry) * scale, area);
     let base = ((a0 + i128::from(bias)) * scale + offset) as i64;
+    Some((base, dx, dy))
+}
+
+/// [`exact_plane`] for vertices in 1/256 pixel, gradients per pixel and the value at the
+/// whole pixel `reference`. Vertices up to 2^31 units and values to 2^34 keep every product
+/// within 128 bits; the value at a far reference is split into a quotient and a remainder of
+/// the area, so that its scaling cannot overflow (only its low 64 bits are kept anyway).
+#[inline(never)]
+fn exact_plane_subpixel(
+    vertices: [(i32, i32); 3],
+    values: [i64; 3],
+    bias: i64,
+    reference: Point,
+    scale_bits: u32,
+) -> Option<(i64, i64, i64)> {
+    let [p0, p1, p2] = vertices.map(|(x, y)| (i128::from(x), i128::from(y)));
+    let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
+    let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
+    let area = ex1 * ey2 - ex2 * ey1;
+    if area == 0 {
+        return None;
+    }
+    let (rx, ry) = (
+        256 * i128::from(reference.x) - p0.0,
+        256 * i128::from(reference.y) - p0.1,
+    );
+    let scale = 1i128 << scale_bits;
+    let [a0, a1, a2] = values.map(i128::from);
+    let (da1, da2) = (a1 - a0, a2 - a0);
+    let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
+    let dx = div_round(nx * scale * 256, area) as i64;
+    let dy = div_round(ny * scale * 256, area) as i64;
+    let (t, a) = if area < 0 {
+        (-(nx * rx + ny * ry), -area)
+    } else {
+        (nx * rx + ny * ry, area)
+    };
+    let (q, r) = (t.div_euclid(a), t.rem_euclid(a));
+    let offset = q.wrapping_mul(scale).wrapping_add(div_round(r * scale, a));
+    let base = ((a0 + i128::from(bias)) * scale).wrapping_add(offset) as i64;
     Some((base, dx, dy))
 }
 

@@ -6,10 +6,7 @@ use super::{
     paint::{drawable_style, PaintVisitor, SolidPainter},
     TriangleStyle,
 };
-use crate::{
-    coverage::{FillRule, Span},
-    geometry::Triangle,
-};
+use crate::{coverage::FillRule, geometry::Shape};
 
 /// Fills a triangle with one colour.
 ///
@@ -92,9 +89,9 @@ impl<C: PixelColor> TriangleStyle for FlatStyle<C> {
     }
 
     #[inline(always)]
-    fn paint<V: PaintVisitor<C>>(
+    fn paint<G: Shape, V: PaintVisitor<C>>(
         &self,
-        _triangle: &Triangle,
+        _triangle: &G,
         _window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
@@ -104,34 +101,6 @@ impl<C: PixelColor> TriangleStyle for FlatStyle<C> {
 }
 
 drawable_style!([C: PixelColor] FlatStyle<C>);
-
-impl<C: PixelColor> embedded_graphics::primitives::StyledDrawable<FlatStyle<C>>
-    for crate::geometry::SubPixelTriangle
-{
-    type Color = C;
-    type Output = ();
-
-    /// Draws the sub-pixel triangle's spans, one `fill_solid` each.
-    fn draw_styled<D>(&self, style: &FlatStyle<C>, target: &mut D) -> Result<(), D::Error>
-    where
-        D: embedded_graphics::draw_target::DrawTarget<Color = C>,
-    {
-        let clip = target.bounding_box();
-        let color = style.color;
-        crate::coverage::walk_subpixel(self, style.fill_rule, &clip, &mut |span: Span| {
-            target.fill_solid(&span.rectangle(), color)
-        })
-    }
-}
-
-impl<C: PixelColor> embedded_graphics::primitives::StyledDimensions<FlatStyle<C>>
-    for crate::geometry::SubPixelTriangle
-{
-    /// The pixels whose centres the vertices' box spans.
-    fn styled_bounding_box(&self, _style: &FlatStyle<C>) -> Rectangle {
-        subpixel_bounding_box(self)
-    }
-}
 
 /// The whole pixels between the vertices' extremes: every pixel the triangle can cover.
 pub(crate) fn subpixel_bounding_box(t: &crate::geometry::SubPixelTriangle) -> Rectangle {

@@ -11,8 +11,8 @@ use super::{
 };
 use crate::{
     coverage::{FillRule, Span},
-    geometry::Triangle,
-    interpolate::{Planes, TrackedPlanes},
+    geometry::Shape,
+    interpolate::TrackedPlanes,
 };
 
 /// Fills a triangle with colours interpolated between its vertices.
@@ -153,9 +153,9 @@ where
     }
 
     #[inline(always)]
-    fn paint<V: PaintVisitor<C>>(
+    fn paint<G: Shape, V: PaintVisitor<C>>(
         &self,
-        triangle: &Triangle,
+        triangle: &G,
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
@@ -165,7 +165,7 @@ where
         // Rounded: half a level of bias turns truncation into rounding to nearest. Dithered:
         // the threshold takes its place.
         let bias = if self.dither { 0 } else { 1 << 15 };
-        let planes = Planes::new(triangle.vertices, values, bias, window.top_left)?;
+        let planes = triangle.planes(values, bias, window.top_left)?;
         let painter = GouraudPainter {
             planes: TrackedPlanes::new(planes),
             dither: self.dither,

@@ -15,8 +15,8 @@ use embedded_graphics::{
 
 use super::spans::{shade_span, PixelShader};
 use crate::{
-    coverage::{walk, walk_coverage, CoverageSink, FillRule, Span, SpanSink},
-    geometry::Triangle,
+    coverage::{CoverageSink, FillRule, Span, SpanSink},
+    geometry::Shape,
     target::BlendTarget,
 };
 
@@ -96,7 +96,7 @@ mod sealed {
 
 /// The crate's triangle styles: [`FlatStyle`](crate::FlatStyle),
 /// [`GouraudStyle`](crate::GouraudStyle), [`TextureStyle`](crate::TextureStyle) and
-/// [`ShaderStyle`](crate::ShaderStyle). Each draws a [`Triangle`] through `into_styled`, and
+/// [`ShaderStyle`](crate::ShaderStyle). Each draws a [`Triangle`](crate::Triangle) through `into_styled`, and
 /// with a depth test through [`DepthTarget::draw`](crate::depth::DepthTarget::draw).
 ///
 /// # Examples
@@ -131,9 +131,9 @@ pub trait TriangleStyle: sealed::Sealed {
     /// Sets up this style's painter for `triangle` drawn into `window` and hands it to
     /// `visitor`; `None` for degenerate triangles.
     #[doc(hidden)]
-    fn paint<V: PaintVisitor<Self::Color>>(
+    fn paint<G: Shape, V: PaintVisitor<Self::Color>>(
         &self,
-        triangle: &Triangle,
+        triangle: &G,
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output>;
@@ -143,9 +143,11 @@ pub trait TriangleStyle: sealed::Sealed {
 macro_rules! drawable_style {
     ([$($generics:tt)*] $style:ty $(where $($bounds:tt)*)?) => {
         impl<$($generics)*> $crate::shading::paint::Sealed for $style $(where $($bounds)*)? {}
-
-        impl<$($generics)*> embedded_graphics::primitives::StyledDrawable<$style>
-            for $crate::geometry::Triangle
+        $crate::shading::paint::drawable_style!(@shape $crate::geometry::Triangle, [$($generics)*] $style $(where $($bounds)*)?);
+        $crate::shading::paint::drawable_style!(@shape $crate::geometry::SubPixelTriangle, [$($generics)*] $style $(where $($bounds)*)?);
+    };
+    (@shape $shape:ty, [$($generics:tt)*] $style:ty $(where $($bounds:tt)*)?) => {
+        impl<$($generics)*> embedded_graphics::primitives::StyledDrawable<$style> for $shape
         $(where $($bounds)*)?
         {
             type Color = <$style as $crate::shading::TriangleStyle>::Color;
@@ -160,8 +162,7 @@ macro_rules! drawable_style {
             }
         }
 
-        impl<$($generics)*> embedded_graphics::primitives::StyledDimensions<$style>
-            for $crate::geometry::Triangle
+        impl<$($generics)*> embedded_graphics::primitives::StyledDimensions<$style> for $shape
         $(where $($bounds)*)?
         {
             fn styled_bounding_box(&self, _style: &$style) -> embedded_graphics::primitives::Rectangle {
@@ -175,12 +176,9 @@ pub(crate) use sealed::Sealed;
 
 /// Draws `triangle` with `style` straight into `target`: each span painted as it comes.
 #[inline(always)]
-pub(crate) fn draw_plain<S, D>(
-    triangle: &Triangle,
-    style: &S,
-    target: &mut D,
-) -> Result<(), D::Error>
+pub(crate) fn draw_plain<G, S, D>(triangle: &G, style: &S, target: &mut D) -> Result<(), D::Error>
 where
+    G: Shape,
     S: TriangleStyle,
     D: DrawTarget<Color = S::Color>,
 {
@@ -218,14 +216,15 @@ impl Offset for Point {
 /// band of it), so that colours do not depend on the part of the screen drawn, into a target
 /// whose pixel `(x, y)` is the screen's `(x, y) + offset`.
 #[inline(always)]
-pub(crate) fn draw_plain_in<S, D, O>(
-    triangle: &Triangle,
+pub(crate) fn draw_plain_in<G, S, D, O>(
+    triangle: &G,
     style: &S,
     target: &mut D,
     setup: &Rectangle,
     offset: O,
 ) -> Result<(), D::Error>
 where
+    G: Shape,
     S: TriangleStyle,
     D: DrawTarget<Color = S::Color>,
     O: Offset,
@@ -242,16 +241,16 @@ where
 }
 
 /// Walks the triangle and paints every span.
-struct PlainVisitor<'a, D, O> {
+struct PlainVisitor<'a, G, D, O> {
     target: &'a mut D,
-    triangle: &'a Triangle,
+    triangle: &'a G,
     rule: FillRule,
     /// Where spans are drawn, in screen coordinates.
     window: Rectangle,
     offset: O,
 }
 
-impl<D: DrawTarget, O: Offset> PaintVisitor<D::Color> for PlainVisitor<'_, D, O> {
+impl<G: Shape, D: DrawTarget, O: Offset> PaintVisitor<D::Color> for PlainVisitor<'_, G, D, O> {
     type Output = Result<(), D::Error>;
 
     #[inline(always)]
@@ -261,7 +260,7 @@ impl<D: DrawTarget, O: Offset> PaintVisitor<D::Color> for PlainVisitor<'_, D, O>
             painter,
             offset: self.offset,
         };
-        walk(self.triangle, self.rule, &self.window, &mut sink)
+        self.triangle.walk_spans(self.rule, &self.window, &mut sink)
     }
 }
 
@@ -288,14 +287,16 @@ where
 }
 
 /// Draws `triangle` with `style` into `target` with anti-aliased edges: every pixel blended by
-/// the area of its square the triangle covers (see [`walk_coverage`]).
+/// the area of its square the triangle covers (see
+/// [`for_each_coverage_run`](crate::coverage::for_each_coverage_run)).
 #[inline]
-pub(crate) fn draw_anti_aliased<S, D>(
-    triangle: &Triangle,
+pub(crate) fn draw_anti_aliased<G, S, D>(
+    triangle: &G,
     style: &S,
     target: &mut D,
 ) -> Result<(), D::Error>
 where
+    G: Shape,
     S: TriangleStyle,
     D: BlendTarget<Color = S::Color>,
 {
@@ -305,14 +306,15 @@ where
 
 /// [`draw_anti_aliased`] with interpolation set up for `setup` into a target whose pixel
 /// `(x, y)` is the screen's `(x, y) + offset`, as [`draw_plain_in`] (band rendering).
-pub(crate) fn draw_anti_aliased_in<S, D>(
-    triangle: &Triangle,
+pub(crate) fn draw_anti_aliased_in<G, S, D>(
+    triangle: &G,
     style: &S,
     target: &mut D,
     setup: &Rectangle,
     offset: Point,
 ) -> Result<(), D::Error>
 where
+    G: Shape,
     S: TriangleStyle,
     D: BlendTarget<Color = S::Color>,
 {
@@ -327,15 +329,15 @@ where
 }
 
 /// Walks the triangle's area coverage and paints every run, blended by its coverage.
-struct AntiAliasVisitor<'a, D> {
+struct AntiAliasVisitor<'a, G, D> {
     target: &'a mut D,
-    triangle: &'a Triangle,
+    triangle: &'a G,
     /// Where runs are drawn, in screen coordinates.
     window: Rectangle,
     offset: Point,
 }
 
-impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
+impl<G: Shape, D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, G, D> {
     type Output = Result<(), D::Error>;
     const EDGE_PIXELS: bool = true;
 
@@ -345,7 +347,7 @@ impl<D: BlendTarget> PaintVisitor<D::Color> for AntiAliasVisitor<'_, D> {
             painter,
             offset: self.offset,
         };
-        walk_coverage(self.triangle, &self.window, &mut sink)
+        self.triangle.walk_area(&self.window, &mut sink)
     }
 }
 

@@ -8,7 +8,7 @@ use super::{
     spans::PlanesShader,
     TriangleStyle,
 };
-use crate::{coverage::FillRule, geometry::Triangle};
+use crate::{coverage::FillRule, geometry::Shape};
 
 /// What a shader sees at one pixel: its position and the `N` attributes interpolated there.
 ///
@@ -131,9 +131,9 @@ where
     }
 
     #[inline(always)]
-    fn paint<V: PaintVisitor<C>>(
+    fn paint<G: Shape, V: PaintVisitor<C>>(
         &self,
-        triangle: &Triangle,
+        triangle: &G,
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {

@@ -3,7 +3,7 @@
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
 use super::paint::stored;
-use crate::{coverage::Span, interpolate::Planes, Triangle};
+use crate::{coverage::Span, geometry::Shape, interpolate::Planes};
 
 /// Computes colours pixel by pixel along a span, by additions.
 pub(crate) trait PixelShader {
@@ -81,15 +81,15 @@ impl<const N: usize, F> PlanesShader<N, F> {
     /// order, `bias` added to all) for drawing into a window at `origin`; `None` for degenerate
     /// triangles.
     #[inline(always)]
-    pub(crate) fn new(
-        triangle: &Triangle,
+    pub(crate) fn new<G: Shape>(
+        triangle: &G,
         values: [[i64; N]; 3],
         bias: i64,
         origin: Point,
         shade: F,
     ) -> Option<Self> {
         Some(Self {
-            planes: Planes::new(triangle.vertices, values, bias, origin)?,
+            planes: triangle.planes(values, bias, origin)?,
             shade,
         })
     }

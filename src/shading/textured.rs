@@ -11,7 +11,7 @@ use super::{
 };
 use crate::{
     coverage::{FillRule, Span},
-    geometry::Triangle,
+    geometry::Shape,
     interpolate::{Planes, TrackedPlanes},
     texture::{
         Axis, Clamped, Direct, Filter, Pow2Repeated, Repeated, TexelSource, Wrap, COORDINATE_BITS,
@@ -257,9 +257,9 @@ where
     }
 
     #[inline(always)]
-    fn paint<V: PaintVisitor<T::Color>>(
+    fn paint<G: Shape, V: PaintVisitor<T::Color>>(
         &self,
-        triangle: &Triangle,
+        triangle: &G,
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
@@ -277,12 +277,13 @@ drawable_style!([T, const M: usize] TextureStyle<T> where T: TexelSource + Copy,
 /// The planes of the texture coordinates, biased so that truncating them rounds as the filter
 /// needs, and lifted so that they never fall below the exact coordinate.
 #[inline(always)]
-fn coordinate_planes<T>(
-    triangle: &Triangle,
+fn coordinate_planes<G, T>(
+    triangle: &G,
     style: &TextureStyle<T>,
     window: &Rectangle,
 ) -> Option<Planes<2, COORDINATE_BITS>>
 where
+    G: Shape,
     T: TexelSource,
     T::Color: ChannelColor,
 {
@@ -295,7 +296,7 @@ where
         Filter::Nearest => 1 << 15,
         Filter::Bilinear => 1 << (15 - T::Color::WEIGHT_BITS),
     };
-    let mut planes = Planes::new_in(triangle.vertices, values, bias, window)?;
+    let mut planes = triangle.planes_in(values, bias, window)?;
     // Gradients are rounded to 2^-46, so a value `dx` pixels across and `dy` down from the
     // reference (both within the window), then `k` pixels along a span, is off by at most
     // (|dx| + |dy| + k + 1) / 2 units. Adding that much keeps every value at or above the
@@ -312,12 +313,13 @@ where
 
 /// The planes of the modulation factors: each channel as a 16.16 fraction of its maximum.
 #[inline(always)]
-fn tint_planes<C, const M: usize>(
-    triangle: &Triangle,
+fn tint_planes<G, C, const M: usize>(
+    triangle: &G,
     colors: [C; 3],
     window: &Rectangle,
 ) -> Option<Planes<M>>
 where
+    G: Shape,
     C: ChannelColor<Channels = [u8; M]>,
 {
     let max = C::MAX_CHANNELS;
@@ -328,7 +330,7 @@ where
             (i64::from(channels[k]) * 65536 + m / 2) / m
         })
     });
-    Planes::new_in(triangle.vertices, values, 0, window)
+    triangle.planes_in(values, 0, window)
 }
 
 /// The painter of a textured triangle, one type for every filter, wrap and modulation: each run

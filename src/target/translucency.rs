@@ -22,7 +22,7 @@ use embedded_graphics::{
 
 use super::{Framebuffer, StoredPixel};
 use crate::{
-    geometry::Triangle,
+    geometry::Shape,
     shading::{paint::draw_anti_aliased, ChannelColor, TriangleStyle},
 };
 
@@ -175,8 +175,9 @@ pub trait BlendTarget: DrawTarget<Color: ChannelColor> {
     /// assert_eq!(frame.pixel(Point::new(13, 13)), Some(Gray8::BLACK));
     /// # Ok::<(), trirast::Error>(())
     /// ```
-    fn draw_anti_aliased<S>(&mut self, triangle: &Triangle, style: &S) -> Result<(), Self::Error>
+    fn draw_anti_aliased<G, S>(&mut self, triangle: &G, style: &S) -> Result<(), Self::Error>
     where
+        G: Shape,
         S: TriangleStyle<Color = Self::Color>,
         Self: Sized,
     {

@@ -1,0 +1,201 @@
+//! What the styles draw: whole-pixel and sub-pixel triangles, through one interface.
+
+use embedded_graphics::{geometry::Point, primitives::Rectangle};
+
+use super::{SubPixelTriangle, Triangle};
+use crate::{
+    coverage::{
+        walk, walk_coverage, walk_erased, walk_subpixel, walk_subpixel_coverage, CoverageSink,
+        FillRule, SpanSink,
+    },
+    interpolate::Planes,
+};
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for super::Triangle {}
+    impl Sealed for super::SubPixelTriangle {}
+}
+
+/// A triangle the crate's styles draw: [`Triangle`] (whole-pixel vertices) or
+/// [`SubPixelTriangle`] (vertices in 1/256 pixel). Every style draws either through
+/// `into_styled`, and through [`DepthTarget::draw`](crate::depth::DepthTarget::draw) and
+/// [`BlendTarget::draw_anti_aliased`](crate::target::BlendTarget::draw_anti_aliased); the
+/// code for each is built only for the shapes a program draws.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::prelude::*;
+/// use trirast::geometry::{Shape, SubPixelTriangle};
+/// use trirast::Triangle;
+///
+/// fn draws<S: Shape>(_: &S) {}
+/// let t = Triangle::new(Point::new(0, 0), Point::new(4, 0), Point::new(0, 4));
+/// draws(&t);
+/// draws(&SubPixelTriangle::from(t));
+/// ```
+pub trait Shape: sealed::Sealed {
+    /// Feeds the covered spans inside `clip` to `sink`, row by row.
+    #[doc(hidden)]
+    fn walk_spans<K: SpanSink + ?Sized>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut K,
+    ) -> Result<(), K::Error>;
+
+    /// [`Shape::walk_spans`] for a sink behind `dyn`.
+    #[doc(hidden)]
+    fn walk_spans_erased<E>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut dyn SpanSink<Error = E>,
+    ) -> Result<(), E>;
+
+    /// Feeds the area coverage inside `clip` to `sink`.
+    #[doc(hidden)]
+    fn walk_area<K: CoverageSink>(&self, clip: &Rectangle, sink: &mut K) -> Result<(), K::Error>;
+
+    /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`.
+    #[doc(hidden)]
+    fn planes<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>>;
+
+    /// Planes of per-vertex `values` with their reference kept within `window`.
+    #[doc(hidden)]
+    fn planes_in<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        window: &Rectangle,
+    ) -> Option<Planes<N, SETUP>>;
+}
+
+impl Shape for Triangle {
+    #[inline(always)]
+    fn walk_spans<K: SpanSink + ?Sized>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut K,
+    ) -> Result<(), K::Error> {
+        walk(self, rule, clip, sink)
+    }
+
+    #[inline(always)]
+    fn walk_spans_erased<E>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut dyn SpanSink<Error = E>,
+    ) -> Result<(), E> {
+        walk_erased(self, rule, clip, sink)
+    }
+
+    #[inline(always)]
+    fn walk_area<K: CoverageSink>(&self, clip: &Rectangle, sink: &mut K) -> Result<(), K::Error> {
+        walk_coverage(self, clip, sink)
+    }
+
+    #[inline(always)]
+    fn planes<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        Planes::new(self.vertices, values, bias, reference)
+    }
+
+    #[inline(always)]
+    fn planes_in<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        window: &Rectangle,
+    ) -> Option<Planes<N, SETUP>> {
+        Planes::new_in(self.vertices, values, bias, window)
+    }
+}
+
+impl SubPixelTriangle {
+    /// The same triangle with whole-pixel vertices, when every vertex is on a whole pixel:
+    /// it then takes the whole-pixel code, which draws the same pixels (and, so, exactly what
+    /// that [`Triangle`] draws).
+    #[inline(always)]
+    fn whole(&self) -> Option<Triangle> {
+        let [a, b, c] = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
+        if (a.0 | a.1 | b.0 | b.1 | c.0 | c.1) & 0xFF != 0 {
+            return None;
+        }
+        let point = |(x, y): (i32, i32)| Point::new(x >> 8, y >> 8);
+        Some(Triangle::new(point(a), point(b), point(c)))
+    }
+}
+
+impl Shape for SubPixelTriangle {
+    #[inline(always)]
+    fn walk_spans<K: SpanSink + ?Sized>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut K,
+    ) -> Result<(), K::Error> {
+        match self.whole() {
+            Some(whole) => walk(&whole, rule, clip, sink),
+            None => walk_subpixel(self, rule, clip, sink),
+        }
+    }
+
+    #[inline(never)]
+    fn walk_spans_erased<E>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut dyn SpanSink<Error = E>,
+    ) -> Result<(), E> {
+        match self.whole() {
+            Some(whole) => walk_erased(&whole, rule, clip, sink),
+            None => walk_subpixel(self, rule, clip, sink),
+        }
+    }
+
+    #[inline(always)]
+    fn walk_area<K: CoverageSink>(&self, clip: &Rectangle, sink: &mut K) -> Result<(), K::Error> {
+        walk_subpixel_coverage(self, clip, sink)
+    }
+
+    #[inline(always)]
+    fn planes<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        if let Some(whole) = self.whole() {
+            return whole.planes(values, bias, reference);
+        }
+        let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
+        Planes::new_subpixel(raw, values, bias, reference)
+    }
+
+    #[inline(always)]
+    fn planes_in<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        window: &Rectangle,
+    ) -> Option<Planes<N, SETUP>> {
+        if let Some(whole) = self.whole() {
+            return whole.planes_in(values, bias, window);
+        }
+        let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
+        Planes::new_subpixel_in(raw, values, bias, window)
+    }
+}
