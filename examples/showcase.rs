@@ -24,15 +24,54 @@ use embedded_graphics::{
     text::Text,
 };
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay};
-use fixed::types::I16F16;
+use fixed::types::{I16F16, I24F8};
 use tinybmp::Bmp;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
+    geometry::{SubPixelTriangle, SubPoint},
+    mesh::MeshVertex,
     shading::Fragment,
     target::BlendTarget,
     texture::{Filter, ImageTexels, Texels},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
 };
+
+/// Six frames of a needle turning one degree a frame: vertices snapped to whole pixels
+/// (top row) move in jumps, some frames not at all; vertices in 1/256 pixel (bottom row) move
+/// the needle every frame.
+fn subpixel_motion() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (cell, frames) = (36i32, 6i32);
+    let mut display = SimulatorDisplay::new(Size::new((cell * frames) as u32, (2 * cell) as u32));
+    let background = Rgb888::new(24, 30, 48);
+    display.clear(background).unwrap();
+    for frame in 0..frames {
+        // The needle's three corners in 1/256 pixel: the tip 30 pixels out, the base 2.5
+        // pixels either side of the pivot, turned `frame` degrees (182 / 65536 of a turn each).
+        let turn = 7_000 + i64::from(frame) * 182;
+        let pivot = (i64::from(frame * cell + 5) * 256, 32 * 256);
+        let at = |turn: i64, r: i64| {
+            let (s, c) = (cube::sin(turn), cube::cos(turn));
+            (pivot.0 + ((r * s) >> 16), pivot.1 - ((r * c) >> 16))
+        };
+        let corners = [
+            at(turn, 30 * 256),
+            at(turn + 16_384, 640),
+            at(turn - 16_384, 640),
+        ];
+        let sub = |(x, y): (i64, i64)| {
+            SubPoint::new(I24F8::from_bits(x as i32), I24F8::from_bits(y as i32))
+        };
+        let exact = SubPixelTriangle::new(sub(corners[0]), sub(corners[1]), sub(corners[2]));
+        let snapped = Triangle {
+            vertices: exact.vertices.map(|v| MeshVertex::position(&v)),
+        };
+        let style = FlatStyle::new(Rgb888::new(255, 210, 90));
+        snapped.into_styled(style).draw(&mut display).unwrap();
+        let mut lower = display.translated(Point::new(0, cell));
+        exact.into_styled(style).draw(&mut lower).unwrap();
+    }
+    (display, OutputSettingsBuilder::new().scale(4).build())
+}
 
 /// A gauge, aliased (left) and with anti-aliased edges (right): each edge pixel blended over
 /// the dial by the area of it the triangle covers.
@@ -153,6 +192,11 @@ const SCENES: &[Scene] = &[
         name: "anti_aliased",
         about: "a gauge's ticks and needle, aliased (left) and anti-aliased by exact coverage (right)",
         render: anti_aliased,
+    },
+    Scene {
+        name: "subpixel",
+        about: "a needle turning 1 degree a frame: whole-pixel vertices (top) jump, 1/256-pixel ones (bottom) turn",
+        render: subpixel_motion,
     },
     Scene {
         name: "shader",

@@ -2,17 +2,19 @@
 //! styles, optional back-face culling and an optional depth test.
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point};
+use fixed::types::I24F8;
 
 use crate::{
     depth::DepthTarget,
-    geometry::{Orientation, Triangle},
+    geometry::{Orientation, SubPixelTriangle, SubPoint, Triangle},
     shading::TriangleStyle,
     Error,
 };
 
 /// A mesh vertex: where it lands on screen and, for depth-tested drawing, its depth.
 ///
-/// Implemented for `Point` (depth 0) and `(Point, u16)`; implement it for your own vertex type
+/// Implemented for `Point` and `SubPoint` (depth 0) and for `(Point, u16)` and `(SubPoint, u16)`;
+/// implement it for your own vertex type
 /// to carry colours, texture coordinates or normals alongside.
 ///
 /// # Examples
@@ -46,6 +48,56 @@ pub trait MeshVertex {
     /// ```
     fn depth(&self) -> u16 {
         0
+    }
+
+    /// The vertex on screen to 1/256 pixel, for [`Mesh::draw_subpixel`] and
+    /// [`Mesh::draw_with_depth_subpixel`]; [`MeshVertex::position`] unless given.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use fixed::types::I24F8;
+    /// use trirast::{geometry::SubPoint, mesh::MeshVertex};
+    ///
+    /// assert_eq!(Point::new(1, 2).subpixel_position(), SubPoint::from(Point::new(1, 2)));
+    /// let p = SubPoint::new(I24F8::from_num(1.5), I24F8::from_num(2.25));
+    /// assert_eq!(p.subpixel_position(), p);
+    /// assert_eq!(p.position(), Point::new(2, 2)); // nearest, halves up
+    /// ```
+    fn subpixel_position(&self) -> SubPoint {
+        SubPoint::from_point(self.position())
+    }
+}
+
+impl MeshVertex for SubPoint {
+    /// The nearest pixel (halves up).
+    #[inline]
+    fn position(&self) -> Point {
+        let round = |v: I24F8| (v.to_bits() >> 8) + ((v.to_bits() >> 7) & 1);
+        Point::new(round(self.x), round(self.y))
+    }
+
+    #[inline]
+    fn subpixel_position(&self) -> SubPoint {
+        *self
+    }
+}
+
+impl MeshVertex for (SubPoint, u16) {
+    #[inline]
+    fn position(&self) -> Point {
+        self.0.position()
+    }
+
+    #[inline]
+    fn depth(&self) -> u16 {
+        self.1
+    }
+
+    #[inline]
+    fn subpixel_position(&self) -> SubPoint {
+        self.0
     }
 }
 
@@ -227,6 +279,110 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
                 };
                 (!cull.skips(triangle.orientation())).then_some((index, triangle, corners))
             })
+    }
+
+    /// The triangles not culled, with their indices and vertices, at their vertices'
+    /// sub-pixel positions.
+    fn visible_subpixel(
+        &self,
+        cull: Cull,
+    ) -> impl Iterator<Item = (usize, SubPixelTriangle, [&'a V; 3])> + use<'a, V> {
+        let vertices = self.vertices;
+        self.triangles
+            .iter()
+            .enumerate()
+            .filter_map(move |(index, &[a, b, c])| {
+                // Indices were checked in `new`.
+                let corners = [a, b, c].map(|i| &vertices[usize::from(i)]);
+                let triangle = SubPixelTriangle {
+                    vertices: corners.map(MeshVertex::subpixel_position),
+                };
+                (!cull.skips(triangle.orientation())).then_some((index, triangle, corners))
+            })
+    }
+
+    /// [`Mesh::draw`] at the vertices' sub-pixel positions
+    /// ([`MeshVertex::subpixel_position`]): triangles move smoothly as their vertices do.
+    ///
+    /// # Errors
+    ///
+    /// The target's; drawing stops at the first.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use fixed::types::I24F8;
+    /// use trirast::{geometry::SubPoint, mesh::{Cull, Mesh}, FlatStyle, Framebuffer};
+    ///
+    /// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+    /// // A square a third of a pixel right of whole coordinates.
+    /// let v = [at(0.33, 0.0), at(0.33, 4.0), at(4.33, 4.0), at(4.33, 0.0)];
+    /// let mesh = Mesh::new(&v, &[[0, 1, 2], [0, 2, 3]])?;
+    /// let mut pixels = [Gray8::BLACK; 25];
+    /// let mut display = Framebuffer::new(&mut pixels, 5, 5)?;
+    /// mesh.draw_subpixel(&mut display, Cull::None, |_, _| FlatStyle::new(Gray8::WHITE)).unwrap();
+    /// // Columns 1 to 4: column 0's centres lie left of the square.
+    /// assert_eq!(display.pixel(Point::new(0, 1)), Some(Gray8::BLACK));
+    /// assert_eq!(display.pixel(Point::new(4, 1)), Some(Gray8::WHITE));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn draw_subpixel<D, S, F>(
+        &self,
+        target: &mut D,
+        cull: Cull,
+        mut style_of: F,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget,
+        S: TriangleStyle<Color = D::Color>,
+        F: FnMut(usize, [&V; 3]) -> S,
+    {
+        for (index, triangle, corners) in self.visible_subpixel(cull) {
+            crate::shading::paint::draw_plain(&triangle, &style_of(index, corners), target)?;
+        }
+        Ok(())
+    }
+
+    /// [`Mesh::draw_with_depth`] at the vertices' sub-pixel positions.
+    ///
+    /// # Errors
+    ///
+    /// The target's; drawing stops at the first.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::{depth::{DepthBuffer, DepthTarget}, geometry::SubPoint, mesh::{Cull, Mesh}, FlatStyle, Framebuffer};
+    ///
+    /// let p = |x, y| SubPoint::from(Point::new(x, y));
+    /// let v = [(p(0, 0), 500), (p(6, 0), 500), (p(0, 6), 500)];
+    /// let mesh = Mesh::new(&v, &[[0, 1, 2]])?;
+    /// let (mut pixels, mut depths) = ([Gray8::BLACK; 64], [u16::MAX; 64]);
+    /// let mut display = Framebuffer::new(&mut pixels, 8, 8)?;
+    /// let mut zbuffer = DepthBuffer::new(&mut depths, 8, 8)?;
+    /// let mut scene = DepthTarget::new(&mut display, &mut zbuffer)?;
+    /// mesh.draw_with_depth_subpixel(&mut scene, Cull::None, |_, _| FlatStyle::new(Gray8::WHITE)).unwrap();
+    /// assert_eq!(depths[8 + 1], 500);
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn draw_with_depth_subpixel<D, S, F>(
+        &self,
+        target: &mut DepthTarget<'_, '_, D>,
+        cull: Cull,
+        mut style_of: F,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget,
+        S: TriangleStyle<Color = D::Color>,
+        F: FnMut(usize, [&V; 3]) -> S,
+    {
+        for (index, triangle, corners) in self.visible_subpixel(cull) {
+            let depths = corners.map(MeshVertex::depth);
+            target.draw(&triangle, depths, &style_of(index, corners))?;
+        }
+        Ok(())
     }
 
     /// Draws every triangle not culled into `target`, each with the style `style_of` gives for

@@ -408,3 +408,63 @@ fn whole_pixels_draw_bit_for_bit_in_every_style() {
         );
     }
 }
+
+/// `Viewport::to_subpixel` is the exact mapping rounded to the nearest 1/256 pixel, halves
+/// up, and agrees with `to_pixel` once rounded on.
+#[test]
+fn viewport_rounds_to_the_nearest_256th() {
+    use trirast::{geometry::Viewport, mesh::MeshVertex};
+    let mut rng = Rng(99);
+    for _ in 0..20_000 {
+        let area = Rectangle::new(
+            Point::new(rng.range(-500, 500), rng.range(-500, 500)),
+            Size::new(rng.range(1, 4000) as u32, rng.range(1, 4000) as u32),
+        );
+        let viewport = Viewport::new(area);
+        let ndc = [(); 2].map(|()| I16F16::from_bits(rng.range(-3 << 16, 3 << 16)));
+        let p = viewport.to_subpixel(ndc);
+        // x = left + (n + 1) * w / 2 pixels, n = raw / 2^16: in 1/256, exactly
+        // 256 left + (raw + 2^16) * w * 256 / 2^17.
+        let exact = |raw: i32, side: u32, origin: i32| {
+            let num = (i128::from(raw) + 65_536) * i128::from(side) * 256;
+            i128::from(origin) * 256 + (2 * num + 131_072).div_euclid(262_144)
+        };
+        assert_eq!(
+            i128::from(p.x.to_bits()),
+            exact(ndc[0].to_bits(), area.size.width, area.top_left.x)
+        );
+        assert_eq!(
+            i128::from(p.y.to_bits()),
+            exact(-ndc[1].to_bits(), area.size.height, area.top_left.y)
+        );
+        let whole = viewport.to_pixel(ndc);
+        let rounded = p.position();
+        // Rounding twice can differ from rounding once only at a 1/512-pixel tie.
+        assert!((whole - rounded).x.abs() <= 1 && (whole - rounded).y.abs() <= 1);
+    }
+}
+
+/// A sub-pixel mesh (a fan around a centre off the pixel grid) covers every pixel of its
+/// outline once.
+#[test]
+fn subpixel_meshes_draw_every_pixel_once() {
+    use trirast::mesh::{Cull, Mesh};
+    let mut rng = Rng(5);
+    for _ in 0..50 {
+        let raw_area = Rectangle::new(Point::new(0, 0), Size::new(40 * 256, 32 * 256));
+        let grid = jittered_grid(raw_area, 1 + rng.range(0, 6), 1 + rng.range(0, 6), &mut rng);
+        let vertices: Vec<SubPoint> = grid
+            .iter()
+            .flatten()
+            .map(|p| SubPoint::new(I24F8::from_bits(p.x), I24F8::from_bits(p.y)))
+            .collect();
+        let indices: Vec<[u16; 3]> = (0..grid.len() as u16)
+            .map(|t| [3 * t, 3 * t + 1, 3 * t + 2])
+            .collect();
+        let mesh = Mesh::new(&vertices, &indices).unwrap();
+        let mut target = Recorder::<Gray8>::new(Rectangle::new(Point::zero(), Size::new(40, 32)));
+        mesh.draw_subpixel(&mut target, Cull::None, |_, _| FlatStyle::new(Gray8::WHITE))
+            .unwrap();
+        assert!(target.writes.iter().all(|&w| w == 1));
+    }
+}

@@ -14,8 +14,8 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 use trirast::{
     depth::{DepthBuffer, DepthTarget},
-    geometry::Viewport,
-    mesh::{Cull, Mesh},
+    geometry::{SubPoint, Viewport},
+    mesh::{Cull, Mesh, MeshVertex},
     texture::{Filter, Texels},
     Framebuffer, TextureStyle,
 };
@@ -57,7 +57,7 @@ where
 {
     let vertices = vertices(frame, frames, area);
     let mesh = Mesh::new(&vertices, &TRIANGLES).expect("the cube's indices are in range");
-    mesh.draw_with_depth(scene, Cull::Clockwise, |_, corners| {
+    mesh.draw_with_depth_subpixel(scene, Cull::Clockwise, |_, corners| {
         let gray = |l: u8| Rgb565::new(l >> 3, l >> 2, l >> 3);
         TextureStyle::new(texture, corners.map(|v| v.uv))
             .with_filter(Filter::Bilinear)
@@ -68,10 +68,11 @@ where
 /// Fixed point with 16 fraction bits, in `i64` so products need no care.
 const ONE: i64 = 1 << 16;
 
-/// One vertex as drawn: on screen, with depth, light (0..=255) and texture corner.
+/// One vertex as drawn: on screen (to 1/256 pixel, so the cube turns smoothly), with depth,
+/// light (0..=255) and texture corner.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct CubeVertex {
-    pub position: Point,
+    pub position: SubPoint,
     pub depth: u16,
     pub light: u8,
     /// Texture coordinates in texels (the texture is `TEXTURE` x `TEXTURE`).
@@ -79,7 +80,12 @@ pub struct CubeVertex {
 }
 
 impl trirast::mesh::MeshVertex for CubeVertex {
+    /// The nearest pixel, for whole-pixel drawing.
     fn position(&self) -> Point {
+        MeshVertex::position(&self.position)
+    }
+
+    fn subpixel_position(&self) -> SubPoint {
         self.position
     }
 
@@ -153,7 +159,7 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
     // A point light above, left and in front of the cube, in view space.
     let light = [-2 * ONE, 2 * ONE, -ONE];
     let mut out = [CubeVertex {
-        position: Point::zero(),
+        position: SubPoint::default(),
         depth: 0,
         light: 0,
         uv: [I16F16::ZERO; 2],
@@ -171,7 +177,7 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
             let ndc_y = project(y);
             // Linear depth: view distance 2 maps to NDC -1, distance 5 to 1.
             let ndc_z = (depth - 7 * ONE / 2) * 2 / 3;
-            let (position, depth16) = viewport.project([ndc_x, ndc_y, ndc_z].map(|v| {
+            let (position, depth16) = viewport.project_subpixel([ndc_x, ndc_y, ndc_z].map(|v| {
                 I16F16::from_bits(v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32)
             }));
             // Light falls off with the squared distance to the light.

@@ -4,7 +4,9 @@ use embedded_graphics::{
     geometry::{Point, Size},
     primitives::Rectangle,
 };
-use fixed::types::I16F16;
+use fixed::types::{I16F16, I24F8};
+
+use super::SubPoint;
 
 /// Maps normalised device coordinates (NDC: x and y from -1 to 1, y up; depth z from -1 near
 /// to 1 far) onto an area of pixels, as OpenGL's viewport and depth range do.
@@ -92,6 +94,61 @@ impl Viewport {
             map(i128::from(x.to_bits()), width, self.area.top_left.x),
             map(-i128::from(y.to_bits()), height, self.area.top_left.y),
         )
+    }
+
+    /// The sub-pixel point for NDC `[x, y]`: as [`Viewport::to_pixel`], to the nearest 1/256
+    /// pixel (halves up) instead of the nearest pixel, saturated to [`SubPoint`]'s range.
+    /// Vertices that move by less than a pixel then move the triangle by as much, instead of
+    /// jumping a pixel at a time.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::Rectangle};
+    /// use fixed::types::{I16F16, I24F8};
+    /// use trirast::geometry::Viewport;
+    ///
+    /// let viewport = Viewport::new(Rectangle::new(Point::new(10, 20), Size::new(100, 50)));
+    /// let half = I16F16::from_num(0.5);
+    /// // x: 10 + 1.5 * 50 = 85; y: 20 + 0.5 * 25 = 32.5, kept.
+    /// let p = viewport.to_subpixel([half, half]);
+    /// assert_eq!((p.x, p.y), (I24F8::from_num(85), I24F8::from_num(32.5)));
+    /// ```
+    #[must_use]
+    pub fn to_subpixel(&self, [x, y]: [I16F16; 2]) -> SubPoint {
+        let Size { width, height } = self.area.size;
+        let one = i128::from(I16F16::ONE.to_bits());
+        // (ndc + 1) * side / 2 pixels, in 1/256: (raw + one) * side * 256 / (2 * one).
+        let map = |raw: i128, side: u32, origin: i32| {
+            let twice = (raw + one) * i128::from(side) * 256;
+            let offset = (twice + one).div_euclid(2 * one);
+            let units = (i128::from(origin) * 256 + offset)
+                .clamp(i128::from(i32::MIN), i128::from(i32::MAX));
+            I24F8::from_bits(units as i32)
+        };
+        SubPoint::new(
+            map(i128::from(x.to_bits()), width, self.area.top_left.x),
+            map(-i128::from(y.to_bits()), height, self.area.top_left.y),
+        )
+    }
+
+    /// [`Viewport::project`] to a sub-pixel point ([`Viewport::to_subpixel`]) and a depth.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::Rectangle};
+    /// use fixed::types::{I16F16, I24F8};
+    /// use trirast::geometry::Viewport;
+    ///
+    /// let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(320, 240)));
+    /// let (p, depth) = viewport.project_subpixel([I16F16::from_num(0.001), I16F16::ZERO, I16F16::ZERO]);
+    /// assert_eq!(p.x.to_bits(), 160 * 256 + 41); // 0.16 pixel right of the centre
+    /// assert_eq!(depth, 32768);
+    /// ```
+    #[must_use]
+    pub fn project_subpixel(&self, [x, y, z]: [I16F16; 3]) -> (SubPoint, u16) {
+        (self.to_subpixel([x, y]), Self::to_depth(z))
     }
 
     /// The depth for NDC `z`: -1 (near) is 0, 1 (far) is 65535, clamped between.
