@@ -78,7 +78,7 @@ fn main() -> ! {
             scene.for_each(|t| {
                 let _ = triangles.push(t);
             });
-            let drawn = scenes::covered_pixels(&triangles);
+            let drawn = modes::covered_pixels(mode, &triangles);
             pixels.fill(Rgb565::BLACK);
             let mut frame = Framebuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
             let spent = systick::count(|| modes::draw(mode, &triangles, &mut frame, &mut work));

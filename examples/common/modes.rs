@@ -4,10 +4,11 @@
 #![allow(dead_code)]
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
-use fixed::types::I16F16;
+use fixed::types::{I16F16, I24F8};
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
+    geometry::{SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, Texels},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
@@ -54,11 +55,17 @@ pub enum Mode {
     /// Flat with anti-aliased edges (`BlendTarget::draw_anti_aliased`): edge pixels blended by
     /// their exact coverage. Minus `Flat`, what anti-aliasing costs.
     AntiAliased,
+    /// `Flat`, `Gouraud`, `GouraudZ` and `TexNearest` with sub-pixel vertices
+    /// (`SubPixelTriangle`): each vertex moved by a fraction of a pixel (see [`subpixel`]).
+    FlatSub,
+    GouraudSub,
+    GouraudZSub,
+    TexNearestSub,
 }
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 9] = [
+    pub const ALL: [Mode; 13] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -68,6 +75,10 @@ impl Mode {
         Mode::Translucent,
         Mode::GouraudDither,
         Mode::AntiAliased,
+        Mode::FlatSub,
+        Mode::GouraudSub,
+        Mode::GouraudZSub,
+        Mode::TexNearestSub,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -82,14 +93,26 @@ impl Mode {
             Mode::Translucent => "translucent",
             Mode::GouraudDither => "gouraud-dither",
             Mode::AntiAliased => "aa-flat",
+            Mode::FlatSub => "flat-sub",
+            Mode::GouraudSub => "gouraud-sub",
+            Mode::GouraudZSub => "gouraud-z-sub",
+            Mode::TexNearestSub => "nearest-sub",
         }
+    }
+
+    /// Whether the mode draws sub-pixel triangles.
+    pub fn subpixel(self) -> bool {
+        matches!(
+            self,
+            Mode::FlatSub | Mode::GouraudSub | Mode::GouraudZSub | Mode::TexNearestSub
+        )
     }
 }
 
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 36] = [
+pub const EXPECTED: [(Mode, Scene, u32); 52] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -126,6 +149,22 @@ pub const EXPECTED: [(Mode, Scene, u32); 36] = [
     (Mode::AntiAliased, Scene::Small, 0x5307ae13),
     (Mode::AntiAliased, Scene::Mesh, 0x0625bc47),
     (Mode::AntiAliased, Scene::Scene200, 0xe5a3fed2),
+    (Mode::FlatSub, Scene::Big, 0x6196aa16),
+    (Mode::FlatSub, Scene::Small, 0x52875fac),
+    (Mode::FlatSub, Scene::Mesh, 0xd9c24915),
+    (Mode::FlatSub, Scene::Scene200, 0xc7456144),
+    (Mode::GouraudSub, Scene::Big, 0xe5667317),
+    (Mode::GouraudSub, Scene::Small, 0xfb4a2b67),
+    (Mode::GouraudSub, Scene::Mesh, 0x81a361d7),
+    (Mode::GouraudSub, Scene::Scene200, 0x72549775),
+    (Mode::GouraudZSub, Scene::Big, 0xe5667317),
+    (Mode::GouraudZSub, Scene::Small, 0xfb4a2b67),
+    (Mode::GouraudZSub, Scene::Mesh, 0x81a361d7),
+    (Mode::GouraudZSub, Scene::Scene200, 0x72549775),
+    (Mode::TexNearestSub, Scene::Big, 0x04c327f1),
+    (Mode::TexNearestSub, Scene::Small, 0x33439920),
+    (Mode::TexNearestSub, Scene::Mesh, 0x0a47a102),
+    (Mode::TexNearestSub, Scene::Scene200, 0xf6c6fc4a),
 ];
 
 /// The expected checksum of `mode` on `scene`.
@@ -206,6 +245,99 @@ pub fn draw<const N: usize>(
         Mode::Translucent => draw_translucent(triangles, frame),
         Mode::GouraudDither => draw_gouraud(triangles, frame, true),
         Mode::AntiAliased => draw_anti_aliased(triangles, frame),
+        Mode::FlatSub => draw_flat_sub(triangles, frame),
+        Mode::GouraudSub => draw_gouraud_sub(triangles, frame),
+        Mode::GouraudZSub => draw_gouraud_z_sub(triangles, frame, work.depths),
+        Mode::TexNearestSub => draw_textured_sub(triangles, frame, work.texture),
+    }
+}
+
+/// A scene vertex moved by a fraction of a pixel in each axis, from a hash of its
+/// coordinates: the same vertex always moves alike, so meshes stay meshes.
+pub fn subpixel(p: Point) -> SubPoint {
+    let hash = (p.x as u32).wrapping_mul(0x9E37_79B1) ^ (p.y as u32).wrapping_mul(0x85EB_CA77);
+    let hash = hash ^ (hash >> 15);
+    let fraction = |bits: u32| (bits & 0xFF) as i32;
+    SubPoint::new(
+        I24F8::from_bits(p.x * 256 + fraction(hash)),
+        I24F8::from_bits(p.y * 256 + fraction(hash >> 8)),
+    )
+}
+
+/// A scene triangle at its sub-pixel vertices.
+pub fn subpixel_triangle(t: &SceneTriangle) -> SubPixelTriangle {
+    let [a, b, c] = t.vertices.map(subpixel);
+    SubPixelTriangle::new(a, b, c)
+}
+
+/// Pixels `mode` covers in `triangles` (sub-pixel modes at their sub-pixel vertices).
+pub fn covered_pixels(mode: Mode, triangles: &[SceneTriangle]) -> u32 {
+    if !mode.subpixel() {
+        return crate::scenes::covered_pixels(triangles);
+    }
+    let screen =
+        embedded_graphics::primitives::Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
+    let mut total = 0;
+    for t in triangles {
+        let _ = trirast::coverage::for_each_subpixel_span(
+            &subpixel_triangle(t),
+            trirast::FillRule::TopLeft,
+            &screen,
+            |s| {
+                total += s.len;
+                Ok::<(), ()>(())
+            },
+        );
+    }
+    total
+}
+
+#[inline(never)]
+fn draw_flat_sub(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    for t in triangles {
+        let _ = subpixel_triangle(t)
+            .into_styled(FlatStyle::new(t.color))
+            .draw(frame);
+    }
+}
+
+#[inline(never)]
+fn draw_gouraud_sub(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    for t in triangles {
+        let style = GouraudStyle::new(t.vertex_colors);
+        let _ = subpixel_triangle(t).into_styled(style).draw(frame);
+    }
+}
+
+#[inline(never)]
+fn draw_gouraud_z_sub(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    depths: &mut [u16],
+) {
+    let count = triangles.len();
+    depths.fill(u16::MAX);
+    let Ok(mut zbuffer) = DepthBuffer::new(depths, WIDTH, HEIGHT) else {
+        return;
+    };
+    let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
+        return;
+    };
+    for (k, t) in triangles.iter().enumerate() {
+        let style = GouraudStyle::new(t.vertex_colors);
+        let _ = layered.draw(&subpixel_triangle(t), layered_depths(k, count), &style);
+    }
+}
+
+#[inline(never)]
+fn draw_textured_sub(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    texture: Texels<'_, Rgb565>,
+) {
+    for t in triangles {
+        let style = TextureStyle::new(texture, stretched_coordinates(t.vertices));
+        let _ = subpixel_triangle(t).into_styled(style).draw(frame);
     }
 }
 

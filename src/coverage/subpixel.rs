@@ -11,29 +11,33 @@
 use embedded_graphics::primitives::Rectangle;
 
 use super::{edge::Rounding, FillRule, Span, SpanSink};
-use crate::geometry::SubPixelTriangle;
+use crate::{geometry::SubPixelTriangle, setup::Lane};
 
 /// One sub-pixel unit per pixel.
 const UNIT: i64 = 256;
 
-/// An edge walked one row at a time: pixel bound, error term and increments.
+/// An edge walked one row at a time: pixel bound, error term and increments, in lane `T`
+/// (32-bit for triangles under 2^23 units (32,768 pixels) across, which every value of the
+/// walk then fits; 64-bit beyond).
 #[derive(Copy, Clone, Debug)]
-struct SubEdge {
+struct SubEdge<T> {
     /// The pixel bound on the current row.
-    x: i64,
+    x: T,
     /// `K mod D - D`, in `-D..0`.
-    error: i64,
+    error: T,
     /// `floor(dx / dy)`: whole pixels per row.
-    step: i64,
+    step: T,
     /// `256 dx - step D`, in `0..D`.
-    remainder: i64,
+    remainder: T,
     /// `D = 256 dy`.
-    divisor: i64,
+    divisor: T,
 }
 
-impl SubEdge {
+impl<T: Lane> SubEdge<T> {
     /// The edge from `upper` to `lower` (1/256 units, `upper.1 < lower.1`) at pixel row `row`,
-    /// whose samples lie at or below `upper`.
+    /// whose samples lie at or below `upper`. Out of line: one copy per lane serves every
+    /// style and target.
+    #[inline(never)]
     fn start(upper: (i64, i64), lower: (i64, i64), rounding: Rounding, row: i64) -> Self {
         let (dx, dy) = (lower.0 - upper.0, lower.1 - upper.1);
         let divisor = UNIT * dy;
@@ -41,32 +45,22 @@ impl SubEdge {
             Rounding::Ceil => divisor - 1,
             Rounding::FloorPlusOne => divisor,
         };
-        // K = X dy + bias with X in 1/256 (the bound is floor(K / D)): a.x dy + (256 row -
-        // a.y) dx + bias. Far vertices make it wide: once per edge.
-        let down = UNIT * row - upper.1;
-        let narrow = upper
-            .0
-            .checked_mul(dy)
-            .zip(down.checked_mul(dx))
-            .and_then(|(a, b)| a.checked_add(b))
-            .and_then(|k| k.checked_add(bias));
-        let (x, error) = if let Some(k) = narrow {
-            (k.div_euclid(divisor), k.rem_euclid(divisor) - divisor)
+        let (x, error) = start_bound(upper, (dx, dy), bias, row);
+        // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
+        let (step, rest) = if dx < 0 && dx >= -dy {
+            (-1, dx + dy)
+        } else if dx >= 0 && dx < dy {
+            (0, dx)
         } else {
-            let k = i128::from(upper.0) * i128::from(dy)
-                + i128::from(down) * i128::from(dx)
-                + i128::from(bias);
-            let d = i128::from(divisor);
-            // A pixel bound within the 24-bit range, a remainder below D: both fit.
-            (k.div_euclid(d) as i64, (k.rem_euclid(d) - d) as i64)
+            let step = T::from_i64(dx).div_rem_floor(T::from_i64(dy)).0.to_i64();
+            (step, dx - step * dy)
         };
-        let step = dx.div_euclid(dy);
         Self {
-            x,
-            error,
-            step,
-            remainder: UNIT * (dx - step * dy),
-            divisor,
+            x: T::from_i64(x),
+            error: T::from_i64(error),
+            step: T::from_i64(step),
+            remainder: T::from_i64(UNIT * rest),
+            divisor: T::from_i64(divisor),
         }
     }
 
@@ -75,12 +69,61 @@ impl SubEdge {
     fn advance(&mut self) {
         self.x += self.step;
         self.error += self.remainder;
-        if self.error >= 0 {
-            self.x += 1;
+        if self.error >= T::ZERO {
+            self.x += T::ONE;
             self.error -= self.divisor;
         }
     }
 }
+
+/// The pixel bound `floor(K / D)` and error `K mod D - D` of an edge from `upper` with deltas
+/// `(dx, dy)` on pixel row `row`, where `K = X dy + bias` and `D = 256 dy` (`X` the crossing in
+/// 1/256 pixel). Written from the upper vertex's whole pixel, so that the usual case (a row
+/// less than a pixel below it, deltas under 2^21 units) takes one 32-bit division.
+#[inline(always)]
+fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> (i64, i64) {
+    let divisor = UNIT * dy;
+    let (whole, fraction) = (upper.0.div_euclid(UNIT), upper.0.rem_euclid(UNIT));
+    let down = UNIT * row - upper.1;
+
+    if down < UNIT && dy < SMALL && dx > -SMALL && dx < SMALL {
+        // |fraction dy|, |down dx| and bias each below 2^29: the sum fits i32.
+        let k = (fraction * dy + down * dx + bias) as i32;
+        let (q, r) = k.div_rem_floor(divisor as i32);
+        return (whole + i64::from(q), i64::from(r) - divisor);
+    }
+    start_bound_wide((whole, fraction), (dx, dy), bias, down)
+}
+
+/// [`start_bound`] for rows far below the vertex or long edges: out of line, once.
+#[inline(never)]
+fn start_bound_wide(
+    (whole, fraction): (i64, i64),
+    (dx, dy): (i64, i64),
+    bias: i64,
+    down: i64,
+) -> (i64, i64) {
+    let divisor = UNIT * dy;
+    let narrow = fraction
+        .checked_mul(dy)
+        .zip(down.checked_mul(dx))
+        .and_then(|(a, b)| a.checked_add(b))
+        .and_then(|k| k.checked_add(bias));
+    if let Some(k) = narrow {
+        let (q, r) = k.div_rem_floor(divisor);
+        return (whole + q, r - divisor);
+    }
+    // Far rows make it wide: once per edge.
+    let k = i128::from(fraction) * i128::from(dy)
+        + i128::from(down) * i128::from(dx)
+        + i128::from(bias);
+    let d = i128::from(divisor);
+    // A pixel bound within the 24-bit range, a remainder below D: both fit.
+    (whole + k.div_euclid(d) as i64, (k.rem_euclid(d) - d) as i64)
+}
+
+/// Deltas below which an edge's start fits 32 bits.
+const SMALL: i64 = 1 << 21;
 
 /// `ceil(v / 256)`.
 fn ceil_row(v: i64) -> i64 {
@@ -108,13 +151,47 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
             core::mem::swap(&mut top, &mut middle);
         }
     }
-    // The middle vertex right of the long edge (top to bottom): the long edge bounds the left.
-    let cross = i128::from(middle.0 - top.0) * i128::from(bottom.1 - top.1)
-        - i128::from(middle.1 - top.1) * i128::from(bottom.0 - top.0);
-    if cross == 0 {
-        return Ok(());
+    // Triangles under 2^23 units (32,768 pixels) across walk in 32-bit arithmetic.
+    let span = |a: i64, b: i64, c: i64| a.max(b).max(c) - a.min(b).min(c);
+    if span(top.0, middle.0, bottom.0) < 1 << 23 && bottom.1 - top.1 < 1 << 23 {
+        walk_in::<i32, K>([top, middle, bottom], rule, clip, sink)
+    } else {
+        // Rare: out of line and type-erased, one copy per error type.
+        walk_wide([top, middle, bottom], rule, clip, &mut |span| {
+            sink.span(span)
+        })
     }
-    let long_edge_left = cross > 0;
+}
+
+/// [`walk_in`] in 64-bit arithmetic, for triangles 2^23 units across or more.
+#[inline(never)]
+fn walk_wide<E>(
+    vertices: [(i64, i64); 3],
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut dyn SpanSink<Error = E>,
+) -> Result<(), E> {
+    walk_in::<i64, _>(vertices, rule, clip, sink)
+}
+
+/// The walk of vertices sorted by row, in lane `T`.
+#[inline(always)]
+fn walk_in<T: Lane, K: SpanSink + ?Sized>(
+    [top, middle, bottom]: [(i64, i64); 3],
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    // The middle vertex right of the long edge (top to bottom): the long edge bounds the left.
+    let delta = |v: i64| T::from_i64(v);
+    let Some(long_edge_left) = T::cross_positive(
+        delta(middle.0 - top.0),
+        delta(bottom.1 - top.1),
+        delta(middle.1 - top.1),
+        delta(bottom.0 - top.0),
+    ) else {
+        return Ok(());
+    };
     let (x0, y0) = (i64::from(clip.top_left.x), i64::from(clip.top_left.y));
     // Pixel coordinates end at i32::MAX: clips reaching past it stop there.
     let (x1, y1) = (
@@ -144,7 +221,7 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
     } else {
         end
     };
-    let long = SubEdge::start(top, bottom, long_rounding, first);
+    let long = SubEdge::<T>::start(top, bottom, long_rounding, first);
     let upper_half = first < switch;
     let mut short = if upper_half {
         SubEdge::start(top, middle, short_rounding, first)
@@ -152,6 +229,9 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
         SubEdge::start(middle, bottom, short_rounding, first)
     };
     let mut long = long;
+    // The clip's columns in the lane (clamping changes no comparison: bounds stay inside).
+    let lane = |v: i64| T::from_i64(v.clamp(T::CLIP_MIN, T::CLIP_MAX));
+    let (left_clip, right_clip) = (lane(x0), lane(x1));
     let mut row = first;
     let mut stop = if upper_half { switch.min(end) } else { end };
     loop {
@@ -161,13 +241,13 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
             } else {
                 (short.x, long.x)
             };
-            let (l, r) = (l.max(x0), r.min(x1));
+            let (l, r) = (l.max(left_clip), r.min(right_clip));
             if l < r {
                 // Inside the clip, whose coordinates fit i32.
                 let span = Span {
-                    x: l as i32,
+                    x: l.to_i64() as i32,
                     y: row as i32,
-                    len: (r - l) as u32,
+                    len: T::len_u32(r, l),
                 };
                 sink.span(span)?;
             }

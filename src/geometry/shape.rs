@@ -126,8 +126,8 @@ impl Shape for Triangle {
 
 impl SubPixelTriangle {
     /// The same triangle with whole-pixel vertices, when every vertex is on a whole pixel:
-    /// it then takes the whole-pixel code, which draws the same pixels (and, so, exactly what
-    /// that [`Triangle`] draws).
+    /// its planes are then set up as that [`Triangle`]'s, so that it draws exactly what the
+    /// `Triangle` draws.
     #[inline(always)]
     fn whole(&self) -> Option<Triangle> {
         let [a, b, c] = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
@@ -147,10 +147,9 @@ impl Shape for SubPixelTriangle {
         clip: &Rectangle,
         sink: &mut K,
     ) -> Result<(), K::Error> {
-        match self.whole() {
-            Some(whole) => walk(&whole, rule, clip, sink),
-            None => walk_subpixel(self, rule, clip, sink),
-        }
+        // Whole-pixel vertices cover what the whole-pixel walk covers (tests/subpixel.rs):
+        // one walk is built, not both.
+        walk_subpixel(self, rule, clip, sink)
     }
 
     #[inline(never)]
@@ -160,10 +159,7 @@ impl Shape for SubPixelTriangle {
         clip: &Rectangle,
         sink: &mut dyn SpanSink<Error = E>,
     ) -> Result<(), E> {
-        match self.whole() {
-            Some(whole) => walk_erased(&whole, rule, clip, sink),
-            None => walk_subpixel(self, rule, clip, sink),
-        }
+        walk_subpixel(self, rule, clip, sink)
     }
 
     #[inline(always)]
