@@ -54,7 +54,7 @@ use embedded_graphics::{
 
 use crate::{
     depth::{DepthBuffer, DepthTarget, DepthTest},
-    geometry::Triangle,
+    geometry::{Shape, Triangle},
     shading::{
         paint::{draw_anti_aliased_in, draw_plain_in},
         ChannelColor, FlatStyle, GouraudStyle, TextureStyle,
@@ -104,9 +104,10 @@ pub enum SceneStyle<C: PixelColor, T: TexelSource<Color = C>> {
 /// # Ok::<(), trirast::Error>(())
 /// ```
 #[derive(Clone, Debug)]
-pub struct SceneTriangle<C: PixelColor, T: TexelSource<Color = C>> {
-    /// The triangle.
-    pub triangle: Triangle,
+pub struct SceneTriangle<C: PixelColor, T: TexelSource<Color = C>, G = Triangle> {
+    /// The triangle: a [`Triangle`] or a
+    /// [`SubPixelTriangle`](crate::geometry::SubPixelTriangle).
+    pub triangle: G,
     /// Depths per vertex, for triangles drawn through the depth test.
     pub depths: Option<[u16; 3]>,
     /// How it is filled.
@@ -134,15 +135,21 @@ pub struct SceneTriangle<C: PixelColor, T: TexelSource<Color = C>> {
 /// assert_eq!(scene.push(t, style), Err(Error::SceneFull { capacity: 1 }));
 /// # Ok::<(), trirast::Error>(())
 /// ```
-pub struct Scene<'a, C: PixelColor, const N: usize, T: TexelSource<Color = C> = Texels<'a, C>> {
+pub struct Scene<
+    'a,
+    C: PixelColor,
+    const N: usize,
+    T: TexelSource<Color = C> = Texels<'a, C>,
+    G = Triangle,
+> {
     screen: Rectangle,
-    triangles: heapless::Vec<SceneTriangle<C, T>, N>,
+    triangles: heapless::Vec<SceneTriangle<C, T, G>, N>,
     test: DepthTest,
     /// Textures are borrowed for `'a` (the default texture type names it).
     borrow: core::marker::PhantomData<&'a ()>,
 }
 
-impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T> {
+impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>, G: Shape> Scene<'_, C, N, T, G> {
     /// An empty scene for a screen covering `screen`.
     ///
     /// # Examples
@@ -233,7 +240,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     /// assert_eq!(scene.push(t, style), Err(Error::SceneFull { capacity: 1 }));
     /// # Ok::<(), trirast::Error>(())
     /// ```
-    pub fn push(&mut self, triangle: Triangle, style: SceneStyle<C, T>) -> Result<(), Error> {
+    pub fn push(&mut self, triangle: G, style: SceneStyle<C, T>) -> Result<(), Error> {
         self.push_item(triangle, None, style, u8::MAX, false)
     }
 
@@ -257,7 +264,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     /// ```
     pub fn push_with_depth(
         &mut self,
-        triangle: Triangle,
+        triangle: G,
         depths: [u16; 3],
         style: SceneStyle<C, T>,
     ) -> Result<(), Error> {
@@ -290,7 +297,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     /// ```
     pub fn push_translucent(
         &mut self,
-        triangle: Triangle,
+        triangle: G,
         style: SceneStyle<C, T>,
         opacity: u8,
     ) -> Result<(), Error> {
@@ -325,7 +332,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     /// ```
     pub fn push_anti_aliased(
         &mut self,
-        triangle: Triangle,
+        triangle: G,
         style: SceneStyle<C, T>,
         opacity: u8,
     ) -> Result<(), Error> {
@@ -334,7 +341,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
 
     fn push_item(
         &mut self,
-        triangle: Triangle,
+        triangle: G,
         depths: Option<[u16; 3]>,
         style: SceneStyle<C, T>,
         opacity: u8,
@@ -387,12 +394,13 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> Scene<'_, C, N, T
     /// # Ok::<(), trirast::Error>(())
     /// ```
     #[must_use]
-    pub fn triangles(&self) -> &[SceneTriangle<C, T>] {
+    pub fn triangles(&self) -> &[SceneTriangle<C, T, G>] {
         &self.triangles
     }
 }
 
-impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>> fmt::Debug for Scene<'_, C, N, T>
+impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>, G> fmt::Debug
+    for Scene<'_, C, N, T, G>
 where
     C: fmt::Debug,
     T: fmt::Debug,
@@ -406,16 +414,11 @@ where
     }
 }
 
-/// The rows of `screen` the triangle's bounding box covers.
-fn covered_rows(triangle: &Triangle, screen: &Rectangle) -> core::ops::Range<i32> {
-    if triangle.is_degenerate() {
+/// The rows of `screen` the triangle's samples can lie on.
+fn covered_rows<G: Shape>(triangle: &G, screen: &Rectangle) -> core::ops::Range<i32> {
+    let Some((top, bottom)) = triangle.sample_rows() else {
         return 0..0;
-    }
-    let ys = triangle.vertices.map(|p| i64::from(p.y));
-    let (top, bottom) = (
-        ys.into_iter().min().unwrap_or(0),
-        ys.into_iter().max().unwrap_or(0),
-    );
+    };
     let screen_top = i64::from(screen.top_left.y);
     let screen_bottom = screen_top + i64::from(screen.size.height);
     // Rows are pixel rows: the bottom vertex's row is included (inclusive fill rule).
@@ -593,15 +596,16 @@ where
     /// display.assert_pattern(&["####", "###.", "##..", "#..."]);
     /// # Ok::<(), trirast::Error>(())
     /// ```
-    pub fn render<D, const N: usize, T>(
+    pub fn render<D, const N: usize, T, G>(
         &mut self,
-        scene: &Scene<'_, C, N, T>,
+        scene: &Scene<'_, C, N, T, G>,
         background: C,
         target: &mut D,
     ) -> Result<(), BandError<D::Error>>
     where
         D: DrawTarget<Color = C>,
         T: TexelSource<Color = C> + Copy,
+        G: Shape,
         C: ChannelColor,
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
@@ -613,7 +617,7 @@ where
         {
             return Err(BandError::Setup(Error::BandBlending));
         }
-        self.render_each::<D, N, T, false>(scene, background, target)
+        self.render_each::<D, N, T, G, false>(scene, background, target)
     }
 
     /// [`Bands::render`] for scenes that also hold translucent and anti-aliased triangles
@@ -646,33 +650,35 @@ where
     /// assert_eq!(display.pixel(Point::new(1, 1)), Some(Gray8::new(64)));
     /// # Ok::<(), trirast::Error>(())
     /// ```
-    pub fn render_blended<D, const N: usize, T>(
+    pub fn render_blended<D, const N: usize, T, G>(
         &mut self,
-        scene: &Scene<'_, C, N, T>,
+        scene: &Scene<'_, C, N, T, G>,
         background: C,
         target: &mut D,
     ) -> Result<(), BandError<D::Error>>
     where
         D: DrawTarget<Color = C>,
         T: TexelSource<Color = C> + Copy,
+        G: Shape,
         C: ChannelColor,
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
     {
-        self.render_each::<D, N, T, true>(scene, background, target)
+        self.render_each::<D, N, T, G, true>(scene, background, target)
     }
 
     /// Renders every band; `BLEND` builds in the drawing of translucent and anti-aliased
     /// triangles.
-    fn render_each<D, const N: usize, T, const BLEND: bool>(
+    fn render_each<D, const N: usize, T, G, const BLEND: bool>(
         &mut self,
-        scene: &Scene<'_, C, N, T>,
+        scene: &Scene<'_, C, N, T, G>,
         background: C,
         target: &mut D,
     ) -> Result<(), BandError<D::Error>>
     where
         D: DrawTarget<Color = C>,
         T: TexelSource<Color = C> + Copy,
+        G: Shape,
         C: ChannelColor,
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
@@ -698,7 +704,7 @@ where
                 Point::new(screen.top_left.x, band_top),
                 Size::new(self.width, rows),
             );
-            self.render_band::<N, T, BLEND>(scene, background, &area, len);
+            self.render_band::<N, T, G, BLEND>(scene, background, &area, len);
             let pixels = &self.pixels[..len];
             target
                 .fill_contiguous(&area, pixels.iter().map(|&p| p.load()))
@@ -709,14 +715,15 @@ where
     }
 
     /// Draws the triangles touching `area` (one band) into the band buffers.
-    fn render_band<const N: usize, T, const BLEND: bool>(
+    fn render_band<const N: usize, T, G, const BLEND: bool>(
         &mut self,
-        scene: &Scene<'_, C, N, T>,
+        scene: &Scene<'_, C, N, T, G>,
         background: C,
         area: &Rectangle,
         len: usize,
     ) where
         T: TexelSource<Color = C> + Copy,
+        G: Shape,
         C: ChannelColor,
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,

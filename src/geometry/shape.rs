@@ -58,6 +58,11 @@ pub trait Shape: sealed::Sealed {
     #[doc(hidden)]
     fn walk_area<K: CoverageSink>(&self, clip: &Rectangle, sink: &mut K) -> Result<(), K::Error>;
 
+    /// The pixel rows the triangle can cover, with or without anti-aliasing, first and last
+    /// (both included); `None` for degenerate triangles.
+    #[doc(hidden)]
+    fn sample_rows(&self) -> Option<(i64, i64)>;
+
     /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`.
     #[doc(hidden)]
     fn planes<const N: usize, const SETUP: u32>(
@@ -78,6 +83,15 @@ pub trait Shape: sealed::Sealed {
 }
 
 impl Shape for Triangle {
+    #[inline]
+    fn sample_rows(&self) -> Option<(i64, i64)> {
+        if self.is_degenerate() {
+            return None;
+        }
+        let ys = self.vertices.map(|p| i64::from(p.y));
+        Some((ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2])))
+    }
+
     #[inline(always)]
     fn walk_spans<K: SpanSink + ?Sized>(
         &self,
@@ -140,6 +154,18 @@ impl SubPixelTriangle {
 }
 
 impl Shape for SubPixelTriangle {
+    #[inline]
+    fn sample_rows(&self) -> Option<(i64, i64)> {
+        if self.is_degenerate() {
+            return None;
+        }
+        let ys = self.vertices.map(|p| i64::from(p.y.to_bits()));
+        let (top, bottom) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+        // Rows whose pixel squares (half a pixel either side of the samples) the vertices
+        // reach: anti-aliasing covers those.
+        Some(((top - 128).div_euclid(256), (bottom + 128).div_euclid(256)))
+    }
+
     #[inline(always)]
     fn walk_spans<K: SpanSink + ?Sized>(
         &self,
