@@ -88,8 +88,27 @@ fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> 
 
     if down < UNIT && dy < SMALL && dx > -SMALL && dx < SMALL {
         // |fraction dy|, |down dx| and bias each below 2^29: the sum fits i32.
-        let k = (fraction * dy + down * dx + bias) as i32;
-        let (q, r) = k.div_rem_floor(divisor as i32);
+        let (k, d) = ((fraction * dy + down * dx + bias) as i32, divisor as i32);
+        // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
+        // `target_has_atomic` can tell) count steep edges' quotients out; the others divide
+        // (counting measured +4% per small flat triangle on Cortex-M4F).
+        let count = cfg!(not(target_has_atomic = "32"));
+        let (q, r) = if count && dx > -dy && dx < dy {
+            // Steep: each term is under D in magnitude, so K / D is -1 to 3; count it out
+            // rather than divide (a library call on Cortex-M0).
+            let (mut q, mut r) = (0, k);
+            while r < 0 {
+                r += d;
+                q -= 1;
+            }
+            while r >= d {
+                r -= d;
+                q += 1;
+            }
+            (q, r)
+        } else {
+            k.div_rem_floor(d)
+        };
         return (whole + i64::from(q), i64::from(r) - divisor);
     }
     start_bound_wide((whole, fraction), (dx, dy), bias, down)
