@@ -69,7 +69,7 @@ impl Edge {
     fn new(a: Position, b: Position, first_row: i64) -> Self {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         // The first row boundary at or below `a` and at or below the first row drawn.
-        let y = (a.y.div_euclid(ONE) + i64::from(a.y.rem_euclid(ONE) != 0)) * ONE;
+        let y = ((a.y + ONE - 1) >> FRAC) << FRAC;
         let y = y.max(first_row * ONE);
         let ((x, remainder), (step, step_remainder)) = if y - a.y == ONE / 2 {
             // The usual start, half a row below a vertex at a pixel centre: the row step is
@@ -260,7 +260,7 @@ impl RowBoundaries {
     fn columns(pieces: &[Piece]) -> (i64, i64) {
         let left = pieces.iter().map(|p| p.left).min().unwrap_or(0);
         let right = pieces.iter().map(|p| p.right).max().unwrap_or(0);
-        (left.div_euclid(ONE), (right + ONE - 1).div_euclid(ONE))
+        (left >> FRAC, (right + ONE - 1) >> FRAC)
     }
 }
 
@@ -362,8 +362,9 @@ fn lone_piece_columns<K: CoverageSink>(
     run: &mut EdgeRun,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let first = piece.left.div_euclid(ONE);
-    let end = (piece.right + ONE - 1).div_euclid(ONE);
+    // Shifts, not `div_euclid` (whose remainder costs a 64-bit multiply on Cortex-M0).
+    let first = piece.left >> FRAC;
+    let end = (piece.right + ONE - 1) >> FRAC;
     let mut put = |column: i64, area_left: i64| -> Result<(), K::Error> {
         let coverage = if left_side {
             rows * ONE - area_left
@@ -407,9 +408,21 @@ fn lone_piece_columns<K: CoverageSink>(
     // worth each time.
     let (from, to) = ((first + 1).max(clip.0), (end - 1).min(clip.1));
     if from < to {
-        let per_column = piece.rows_per_column.saturating_mul(ONE as u64);
-        let mut rows_before =
-            ((from * ONE - piece.left) as u64).saturating_mul(piece.rows_per_column);
+        let per_x = piece.rows_per_column;
+        // A shift, not a multiply (a library call on Cortex-M0).
+        let per_column = if per_x >> (64 - FRAC) == 0 {
+            per_x << FRAC
+        } else {
+            u64::MAX
+        };
+        let across = (from * ONE - piece.left) as u64;
+        let mut rows_before = if across < 1 << 16 && per_x < 1 << 32 {
+            // 16 by 32 bits: two 32-bit products of 16-bit halves.
+            let (a, high, low) = (across as u32, (per_x >> 16) as u32, (per_x & 0xFFFF) as u32);
+            (u64::from(a * high) << 16) + u64::from(a * low)
+        } else {
+            across.saturating_mul(per_x)
+        };
         for column in from..to {
             let rows_after = rows_before.saturating_add(per_column);
             let before = ((rows_before >> 32) as i64).min(piece.rows);
@@ -604,8 +617,8 @@ fn walk_coverage_of<K: CoverageSink>(
     } else {
         (&backward[..backwards], &forward[..forwards])
     };
-    let first_row = polygon[top].y.div_euclid(ONE).max(row_start);
-    let last_row = (polygon[bottom].y + ONE - 1).div_euclid(ONE).min(row_end);
+    let first_row = (polygon[top].y >> FRAC).max(row_start);
+    let last_row = ((polygon[bottom].y + ONE - 1) >> FRAC).min(row_end);
     let (mut left, mut right) = (Chain::new(left, first_row), Chain::new(right, first_row));
     // Reused from row to row: each row overwrites what it reads.
     let mut bounds = RowBoundaries::default();

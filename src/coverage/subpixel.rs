@@ -83,7 +83,8 @@ impl<T: Lane> SubEdge<T> {
 #[inline(always)]
 fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> (i64, i64) {
     let divisor = UNIT * dy;
-    let (whole, fraction) = (upper.0.div_euclid(UNIT), upper.0.rem_euclid(UNIT));
+    // Shifts and masks, not `div_euclid` (whose remainder is a 64-bit multiply on M0).
+    let (whole, fraction) = (upper.0 >> 8, upper.0 & (UNIT - 1));
     let down = UNIT * row - upper.1;
 
     if down < UNIT && dy < SMALL && dx > -SMALL && dx < SMALL {
@@ -146,7 +147,7 @@ const SMALL: i64 = 1 << 21;
 
 /// `ceil(v / 256)`.
 fn ceil_row(v: i64) -> i64 {
-    (v + UNIT - 1).div_euclid(UNIT)
+    (v + UNIT - 1) >> 8
 }
 
 /// Feeds every span of `triangle` inside `clip` to `sink`, top to bottom, one per row: pixel
@@ -221,7 +222,7 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
     // sample on a bottom edge (or at a bottom apex) is out; under the inclusive rule, in.
     let (right_rounding, end) = match rule {
         FillRule::TopLeft => (Rounding::Ceil, ceil_row(bottom.1)),
-        FillRule::Inclusive => (Rounding::FloorPlusOne, bottom.1.div_euclid(UNIT) + 1),
+        FillRule::Inclusive => (Rounding::FloorPlusOne, (bottom.1 >> 8) + 1),
     };
     let first = ceil_row(top.1).max(y0);
     let end = end.min(y1);

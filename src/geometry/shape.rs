@@ -163,7 +163,7 @@ impl Shape for SubPixelTriangle {
         let (top, bottom) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
         // Rows whose pixel squares (half a pixel either side of the samples) the vertices
         // reach: anti-aliasing covers those.
-        Some(((top - 128).div_euclid(256), (bottom + 128).div_euclid(256)))
+        Some(((top - 128) >> 8, (bottom + 128) >> 8))
     }
 
     #[inline(always)]
