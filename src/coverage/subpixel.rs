@@ -52,8 +52,8 @@ impl<T: Lane> SubEdge<T> {
         } else if dx >= 0 && dx < dy {
             (0, dx)
         } else {
-            let step = T::from_i64(dx).div_rem_floor(T::from_i64(dy)).0.to_i64();
-            (step, dx - step * dy)
+            let (step, rest) = T::from_i64(dx).div_rem_floor(T::from_i64(dy));
+            (step.to_i64(), rest.to_i64())
         };
         Self {
             x: T::from_i64(x),
@@ -89,7 +89,10 @@ fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> 
 
     if down < UNIT && dy < SMALL && dx > -SMALL && dx < SMALL {
         // |fraction dy|, |down dx| and bias each below 2^29: the sum fits i32.
-        let (k, d) = ((fraction * dy + down * dx + bias) as i32, divisor as i32);
+        // In 32 bits: 64-bit products are library calls on Cortex-M0.
+        let narrow = |v: i64| v as i32;
+        let k = narrow(fraction) * narrow(dy) + narrow(down) * narrow(dx) + narrow(bias);
+        let d = narrow(divisor);
         // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
         // `target_has_atomic` can tell) count steep edges' quotients out; the others divide
         // (counting measured +4% per small flat triangle on Cortex-M4F).
