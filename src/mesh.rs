@@ -6,7 +6,7 @@ use fixed::types::I24F8;
 
 use crate::{
     depth::DepthTarget,
-    geometry::{Orientation, SubPixelTriangle, SubPoint, Triangle},
+    geometry::{Orientation, Shape, SubPixelTriangle, SubPoint, Triangle},
     shading::TriangleStyle,
     Error,
 };
@@ -262,11 +262,13 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
         self.triangles
     }
 
-    /// The drawable triangles: index, screen triangle and vertices, culled triangles left out.
-    fn visible(
+    /// The drawable triangles: index, triangle (built by `shape` from the vertices, with its
+    /// orientation) and vertices, culled triangles left out.
+    fn visible<G>(
         &self,
         cull: Cull,
-    ) -> impl Iterator<Item = (usize, Triangle, [&'a V; 3])> + use<'a, V> {
+        shape: fn([&'a V; 3]) -> (G, Orientation),
+    ) -> impl Iterator<Item = (usize, G, [&'a V; 3])> + use<'a, V, G> {
         let vertices = self.vertices;
         self.triangles
             .iter()
@@ -274,31 +276,66 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
             .filter_map(move |(index, &[a, b, c])| {
                 // Indices were checked in `new`.
                 let corners = [a, b, c].map(|i| &vertices[usize::from(i)]);
-                let triangle = Triangle {
-                    vertices: corners.map(MeshVertex::position),
-                };
-                (!cull.skips(triangle.orientation())).then_some((index, triangle, corners))
+                let (triangle, orientation) = shape(corners);
+                (!cull.skips(orientation)).then_some((index, triangle, corners))
             })
     }
 
-    /// The triangles not culled, with their indices and vertices, at their vertices'
-    /// sub-pixel positions.
-    fn visible_subpixel(
+    /// Draws the triangles `shape` builds, not culled, with the style `style_of` gives.
+    fn draw_shapes<G, D, S, F>(
         &self,
+        target: &mut D,
         cull: Cull,
-    ) -> impl Iterator<Item = (usize, SubPixelTriangle, [&'a V; 3])> + use<'a, V> {
-        let vertices = self.vertices;
-        self.triangles
-            .iter()
-            .enumerate()
-            .filter_map(move |(index, &[a, b, c])| {
-                // Indices were checked in `new`.
-                let corners = [a, b, c].map(|i| &vertices[usize::from(i)]);
-                let triangle = SubPixelTriangle {
-                    vertices: corners.map(MeshVertex::subpixel_position),
-                };
-                (!cull.skips(triangle.orientation())).then_some((index, triangle, corners))
-            })
+        shape: fn([&'a V; 3]) -> (G, Orientation),
+        mut style_of: F,
+    ) -> Result<(), D::Error>
+    where
+        G: Shape,
+        D: DrawTarget,
+        S: TriangleStyle<Color = D::Color>,
+        F: FnMut(usize, [&V; 3]) -> S,
+    {
+        for (index, triangle, corners) in self.visible(cull, shape) {
+            crate::shading::paint::draw_plain(&triangle, &style_of(index, corners), target)?;
+        }
+        Ok(())
+    }
+
+    /// Draws the triangles `shape` builds, not culled, through the depth test of `target`.
+    fn draw_shapes_with_depth<G, D, S, F>(
+        &self,
+        target: &mut DepthTarget<'_, '_, D>,
+        cull: Cull,
+        shape: fn([&'a V; 3]) -> (G, Orientation),
+        mut style_of: F,
+    ) -> Result<(), D::Error>
+    where
+        G: Shape,
+        D: DrawTarget,
+        S: TriangleStyle<Color = D::Color>,
+        F: FnMut(usize, [&V; 3]) -> S,
+    {
+        for (index, triangle, corners) in self.visible(cull, shape) {
+            let depths = corners.map(MeshVertex::depth);
+            target.draw(&triangle, depths, &style_of(index, corners))?;
+        }
+        Ok(())
+    }
+
+    /// The triangle at the vertices' whole-pixel positions.
+    fn whole(corners: [&'a V; 3]) -> (Triangle, Orientation) {
+        let triangle = Triangle {
+            vertices: corners.map(MeshVertex::position),
+        };
+        (triangle, triangle.orientation())
+    }
+
+    /// The triangle at the vertices' sub-pixel positions.
+    fn subpixel(corners: [&'a V; 3]) -> (SubPixelTriangle, Orientation) {
+        let triangle = SubPixelTriangle {
+            vertices: corners.map(MeshVertex::subpixel_position),
+        };
+        (triangle, triangle.orientation())
     }
 
     /// [`Mesh::draw`] at the vertices' sub-pixel positions
@@ -331,17 +368,14 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
         &self,
         target: &mut D,
         cull: Cull,
-        mut style_of: F,
+        style_of: F,
     ) -> Result<(), D::Error>
     where
         D: DrawTarget,
         S: TriangleStyle<Color = D::Color>,
         F: FnMut(usize, [&V; 3]) -> S,
     {
-        for (index, triangle, corners) in self.visible_subpixel(cull) {
-            crate::shading::paint::draw_plain(&triangle, &style_of(index, corners), target)?;
-        }
-        Ok(())
+        self.draw_shapes(target, cull, Self::subpixel, style_of)
     }
 
     /// [`Mesh::draw_with_depth`] at the vertices' sub-pixel positions.
@@ -371,18 +405,14 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
         &self,
         target: &mut DepthTarget<'_, '_, D>,
         cull: Cull,
-        mut style_of: F,
+        style_of: F,
     ) -> Result<(), D::Error>
     where
         D: DrawTarget,
         S: TriangleStyle<Color = D::Color>,
         F: FnMut(usize, [&V; 3]) -> S,
     {
-        for (index, triangle, corners) in self.visible_subpixel(cull) {
-            let depths = corners.map(MeshVertex::depth);
-            target.draw(&triangle, depths, &style_of(index, corners))?;
-        }
-        Ok(())
+        self.draw_shapes_with_depth(target, cull, Self::subpixel, style_of)
     }
 
     /// Draws every triangle not culled into `target`, each with the style `style_of` gives for
@@ -408,16 +438,13 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
     /// assert!(pixels.iter().all(|&p| p != Gray8::BLACK)); // no gap on the diagonal
     /// # Ok::<(), trirast::Error>(())
     /// ```
-    pub fn draw<D, S, F>(&self, target: &mut D, cull: Cull, mut style_of: F) -> Result<(), D::Error>
+    pub fn draw<D, S, F>(&self, target: &mut D, cull: Cull, style_of: F) -> Result<(), D::Error>
     where
         D: DrawTarget,
         S: TriangleStyle<Color = D::Color>,
         F: FnMut(usize, [&V; 3]) -> S,
     {
-        for (index, triangle, corners) in self.visible(cull) {
-            crate::shading::paint::draw_plain(&triangle, &style_of(index, corners), target)?;
-        }
-        Ok(())
+        self.draw_shapes(target, cull, Self::whole, style_of)
     }
 
     /// Draws every triangle not culled through the depth test of `target`, with each vertex's
@@ -451,17 +478,13 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
         &self,
         target: &mut DepthTarget<'_, '_, D>,
         cull: Cull,
-        mut style_of: F,
+        style_of: F,
     ) -> Result<(), D::Error>
     where
         D: DrawTarget,
         S: TriangleStyle<Color = D::Color>,
         F: FnMut(usize, [&V; 3]) -> S,
     {
-        for (index, triangle, corners) in self.visible(cull) {
-            let depths = corners.map(MeshVertex::depth);
-            target.draw(&triangle, depths, &style_of(index, corners))?;
-        }
-        Ok(())
+        self.draw_shapes_with_depth(target, cull, Self::whole, style_of)
     }
 }

@@ -1,7 +1,7 @@
 //! Sub-pixel geometry: vertices with a fraction of a pixel, for smooth motion.
 
 use embedded_graphics::{
-    geometry::{Dimensions, Point},
+    geometry::{Dimensions, Point, Size},
     primitives::{Primitive, Rectangle},
     transform::Transform,
 };
@@ -247,7 +247,19 @@ impl Dimensions for SubPixelTriangle {
     /// The pixels whose centres the vertices' box spans: every pixel the triangle can cover
     /// (a zero-sized rectangle when it spans no pixel centre).
     fn bounding_box(&self) -> Rectangle {
-        crate::shading::subpixel_bounding_box(self)
+        let xs = self.vertices.map(|p| i64::from(p.x.to_bits()));
+        let ys = self.vertices.map(|p| i64::from(p.y.to_bits()));
+        // Whole pixels from the first sample at or after the least coordinate to the last at
+        // or before the greatest (shifts floor; within ±2^23 pixels everything fits i32).
+        let first = |v: [i64; 3]| ((v[0].min(v[1]).min(v[2]) + 255) >> 8) as i32;
+        let last = |v: [i64; 3]| (v[0].max(v[1]).max(v[2]) >> 8) as i32;
+        let (x0, y0, x1, y1) = (first(xs), first(ys), last(xs), last(ys));
+        let size = if x1 < x0 || y1 < y0 {
+            Size::zero()
+        } else {
+            Size::new((x1 - x0 + 1) as u32, (y1 - y0 + 1) as u32)
+        };
+        Rectangle::new(Point::new(x0, y0), size)
     }
 }
 
@@ -272,6 +284,30 @@ impl Transform for SubPixelTriangle {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn bounding_box_spans_the_samples_between_the_vertices() {
+        use embedded_graphics::geometry::Dimensions;
+        let p = |x: i32, y: i32| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
+        // x from -1.5 to 3.25, y from 0.5 to 2: samples at x -1..=3, y 1..=2.
+        let t = SubPixelTriangle::new(p(-384, 128), p(832, 512), p(0, 512));
+        assert_eq!(
+            t.bounding_box(),
+            Rectangle::new(Point::new(-1, 1), Size::new(5, 2))
+        );
+        // Between two sample rows: no pixel, a zero size.
+        let thin = SubPixelTriangle::new(p(0, 300), p(900, 310), p(20, 400));
+        assert_eq!(thin.bounding_box().size, Size::zero());
+        let far = SubPixelTriangle::new(p(i32::MIN, i32::MIN), p(i32::MAX, 0), p(0, i32::MAX));
+        let b = far.bounding_box();
+        assert_eq!(
+            (b.top_left, b.size),
+            (
+                Point::new(-(1 << 23), -(1 << 23)),
+                Size::new(1 << 24, 1 << 24)
+            )
+        );
+    }
 
     #[test]
     fn fixed_conversion_rounds_to_nearest() {

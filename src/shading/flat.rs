@@ -101,23 +101,3 @@ impl<C: PixelColor> TriangleStyle for FlatStyle<C> {
 }
 
 drawable_style!([C: PixelColor] FlatStyle<C>);
-
-/// The whole pixels between the vertices' extremes: every pixel the triangle can cover.
-pub(crate) fn subpixel_bounding_box(t: &crate::geometry::SubPixelTriangle) -> Rectangle {
-    let xs = t.vertices.map(|p| i64::from(p.x.to_bits()));
-    let ys = t.vertices.map(|p| i64::from(p.y.to_bits()));
-    let lo = |v: [i64; 3]| (v.iter().copied().min().unwrap_or(0) + 255).div_euclid(256);
-    let hi = |v: [i64; 3]| v.iter().copied().max().unwrap_or(0).div_euclid(256);
-    let (x0, y0, x1, y1) = (lo(xs), lo(ys), hi(xs), hi(ys));
-    if x1 < x0 || y1 < y0 {
-        return Rectangle::new(
-            embedded_graphics::geometry::Point::new(x0 as i32, y0 as i32),
-            embedded_graphics::geometry::Size::zero(),
-        );
-    }
-    // Within ±2^23: the coordinates and sizes fit.
-    Rectangle::new(
-        embedded_graphics::geometry::Point::new(x0 as i32, y0 as i32),
-        embedded_graphics::geometry::Size::new((x1 - x0 + 1) as u32, (y1 - y0 + 1) as u32),
-    )
-}

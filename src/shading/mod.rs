@@ -13,7 +13,6 @@ mod spans;
 mod textured;
 
 pub use channels::ChannelColor;
-pub(crate) use flat::subpixel_bounding_box;
 pub use flat::FlatStyle;
 pub use gouraud::GouraudStyle;
 pub use paint::TriangleStyle;
