@@ -3,12 +3,12 @@
 //! without allocation.
 #![allow(dead_code)]
 
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::StyledDrawable};
 use fixed::types::{I16F16, I24F8};
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
-    geometry::{SubPixelTriangle, SubPoint},
+    geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, Texels},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
@@ -236,19 +236,25 @@ pub fn draw<const N: usize>(
     work: &mut Workspace<'_, N>,
 ) {
     match mode {
-        Mode::Flat => draw_flat(triangles, frame),
-        Mode::Gouraud => draw_gouraud(triangles, frame, false),
-        Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths),
-        Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest),
-        Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear),
+        Mode::Flat => draw_flat(triangles, frame, whole),
+        Mode::Gouraud => draw_gouraud(triangles, frame, whole, false),
+        Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths, whole),
+        Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest, whole),
+        Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear, whole),
         Mode::Band => draw_bands(triangles, frame, work),
         Mode::Translucent => draw_translucent(triangles, frame),
-        Mode::GouraudDither => draw_gouraud(triangles, frame, true),
+        Mode::GouraudDither => draw_gouraud(triangles, frame, whole, true),
         Mode::AntiAliased => draw_anti_aliased(triangles, frame),
-        Mode::FlatSub => draw_flat_sub(triangles, frame),
-        Mode::GouraudSub => draw_gouraud_sub(triangles, frame),
-        Mode::GouraudZSub => draw_gouraud_z_sub(triangles, frame, work.depths),
-        Mode::TexNearestSub => draw_textured_sub(triangles, frame, work.texture),
+        Mode::FlatSub => draw_flat(triangles, frame, subpixel_triangle),
+        Mode::GouraudSub => draw_gouraud(triangles, frame, subpixel_triangle, false),
+        Mode::GouraudZSub => draw_gouraud_z(triangles, frame, work.depths, subpixel_triangle),
+        Mode::TexNearestSub => draw_textured(
+            triangles,
+            frame,
+            work.texture,
+            Filter::Nearest,
+            subpixel_triangle,
+        ),
     }
 }
 
@@ -262,6 +268,12 @@ pub fn subpixel(p: Point) -> SubPoint {
         I24F8::from_bits(p.x * 256 + fraction(hash)),
         I24F8::from_bits(p.y * 256 + fraction(hash >> 8)),
     )
+}
+
+/// A scene triangle at its whole-pixel vertices.
+pub fn whole(t: &SceneTriangle) -> Triangle {
+    let [a, b, c] = t.vertices;
+    Triangle::new(a, b, c)
 }
 
 /// A scene triangle at its sub-pixel vertices.
@@ -292,55 +304,6 @@ pub fn covered_pixels(mode: Mode, triangles: &[SceneTriangle]) -> u32 {
     total
 }
 
-#[inline(never)]
-fn draw_flat_sub(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
-    for t in triangles {
-        let _ = subpixel_triangle(t)
-            .into_styled(FlatStyle::new(t.color))
-            .draw(frame);
-    }
-}
-
-#[inline(never)]
-fn draw_gouraud_sub(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
-    for t in triangles {
-        let style = GouraudStyle::new(t.vertex_colors);
-        let _ = subpixel_triangle(t).into_styled(style).draw(frame);
-    }
-}
-
-#[inline(never)]
-fn draw_gouraud_z_sub(
-    triangles: &[SceneTriangle],
-    frame: &mut Framebuffer<'_, Rgb565>,
-    depths: &mut [u16],
-) {
-    let count = triangles.len();
-    depths.fill(u16::MAX);
-    let Ok(mut zbuffer) = DepthBuffer::new(depths, WIDTH, HEIGHT) else {
-        return;
-    };
-    let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
-        return;
-    };
-    for (k, t) in triangles.iter().enumerate() {
-        let style = GouraudStyle::new(t.vertex_colors);
-        let _ = layered.draw(&subpixel_triangle(t), layered_depths(k, count), &style);
-    }
-}
-
-#[inline(never)]
-fn draw_textured_sub(
-    triangles: &[SceneTriangle],
-    frame: &mut Framebuffer<'_, Rgb565>,
-    texture: Texels<'_, Rgb565>,
-) {
-    for t in triangles {
-        let style = TextureStyle::new(texture, stretched_coordinates(t.vertices));
-        let _ = subpixel_triangle(t).into_styled(style).draw(frame);
-    }
-}
-
 /// Flat with anti-aliased edges, each edge pixel blended over what the frame holds.
 #[inline(never)]
 fn draw_anti_aliased(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
@@ -363,38 +326,53 @@ fn draw_translucent(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb
     }
 }
 
-fn draw_flat(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
-    draw_each(triangles, frame, |t| FlatStyle::new(t.color));
+fn draw_flat<G>(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    shape: fn(&SceneTriangle) -> G,
+) where
+    G: Shape + StyledDrawable<FlatStyle<Rgb565>, Color = Rgb565, Output = ()>,
+{
+    draw_each(triangles, frame, shape, |t| FlatStyle::new(t.color));
 }
 
 /// Gouraud, dithered or not: one function for both, so that adding the dithered mode does not
 /// change how the plain one is compiled.
-fn draw_gouraud(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>, dither: bool) {
-    draw_each(triangles, frame, |t| {
+fn draw_gouraud<G>(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    shape: fn(&SceneTriangle) -> G,
+    dither: bool,
+) where
+    G: Shape + StyledDrawable<GouraudStyle<Rgb565>, Color = Rgb565, Output = ()>,
+{
+    draw_each(triangles, frame, shape, |t| {
         GouraudStyle::new(t.vertex_colors).with_dither(dither)
     });
 }
 
-/// Draws each triangle with the style `style_of` gives it: one function per style.
+/// Draws each triangle, as `shape` builds it, with the style `style_of` gives it: one
+/// function per shape and style.
 #[inline(never)]
-fn draw_each<S>(
+fn draw_each<G, S>(
     triangles: &[SceneTriangle],
     frame: &mut Framebuffer<'_, Rgb565>,
+    shape: fn(&SceneTriangle) -> G,
     style_of: impl Fn(&SceneTriangle) -> S,
 ) where
-    Triangle: embedded_graphics::primitives::StyledDrawable<S, Color = Rgb565, Output = ()>,
+    G: Shape + StyledDrawable<S, Color = Rgb565, Output = ()>,
 {
     for t in triangles {
-        let [a, b, c] = t.vertices;
-        let _ = Triangle::new(a, b, c).into_styled(style_of(t)).draw(frame);
+        let _ = shape(t).draw_styled(&style_of(t), frame);
     }
 }
 
 #[inline(never)]
-fn draw_gouraud_z(
+fn draw_gouraud_z<G: Shape>(
     triangles: &[SceneTriangle],
     frame: &mut Framebuffer<'_, Rgb565>,
     depths: &mut [u16],
+    shape: fn(&SceneTriangle) -> G,
 ) {
     let count = triangles.len();
     depths.fill(u16::MAX);
@@ -405,25 +383,26 @@ fn draw_gouraud_z(
         return;
     };
     for (k, t) in triangles.iter().enumerate() {
-        let [a, b, c] = t.vertices;
         let style = GouraudStyle::new(t.vertex_colors);
-        let _ = layered.draw(&Triangle::new(a, b, c), layered_depths(k, count), &style);
+        let _ = layered.draw(&shape(t), layered_depths(k, count), &style);
     }
 }
 
 /// The texture stretched over each triangle's bounding box.
 #[inline(never)]
-fn draw_textured(
+fn draw_textured<'t, G>(
     triangles: &[SceneTriangle],
     frame: &mut Framebuffer<'_, Rgb565>,
-    texture: Texels<'_, Rgb565>,
+    texture: Texels<'t, Rgb565>,
     filter: Filter,
-) {
+    shape: fn(&SceneTriangle) -> G,
+) where
+    G: Shape + StyledDrawable<TextureStyle<Texels<'t, Rgb565>>, Color = Rgb565, Output = ()>,
+{
     for t in triangles {
-        let [a, b, c] = t.vertices;
         let style =
             TextureStyle::new(texture, stretched_coordinates(t.vertices)).with_filter(filter);
-        let _ = Triangle::new(a, b, c).into_styled(style).draw(frame);
+        let _ = shape(t).draw_styled(&style, frame);
     }
 }
 
