@@ -219,15 +219,16 @@ where
         self.zip_area(area, colors, |dst, color| *dst = S::store(color));
     }
 
-    /// Calls `write` with each pixel of `area` inside the image and its colour from `colors`,
-    /// which holds one colour per pixel of the whole area, row-major: the colours of pixels
-    /// outside the image are skipped. Stops when `colors` ends.
+    /// Calls `write` with each pixel of `area` inside the image and its item from `colors`
+    /// (a colour, or a colour and what to do with it), which holds one item per pixel of the
+    /// whole area, row-major: the items of pixels outside the image are skipped. Stops when
+    /// `colors` ends.
     #[inline]
-    pub(super) fn zip_area<I: Iterator<Item = C> + ?Sized>(
+    pub(super) fn zip_area<T, I: Iterator<Item = T> + ?Sized>(
         &mut self,
         area: &Rectangle,
         colors: &mut I,
-        mut write: impl FnMut(&mut S, C),
+        mut write: impl FnMut(&mut S, T),
     ) {
         let Some(window) = self.clip(area) else {
             return;

@@ -14,10 +14,7 @@
 use core::convert::Infallible;
 
 use embedded_graphics::{
-    draw_target::DrawTarget,
-    geometry::{Dimensions, Point},
-    primitives::Rectangle,
-    Pixel,
+    draw_target::DrawTarget, geometry::Dimensions, primitives::Rectangle, Pixel,
 };
 
 use super::{Framebuffer, StoredPixel};
@@ -319,21 +316,8 @@ where
         I: IntoIterator<Item = C>,
     {
         let opacity = self.opacity;
-        if area.size.height == 1 {
-            // One row inside, the shading styles' case.
-            let (y, x) = (area.top_left.y, area.top_left.x);
-            if let Some(row) = self.frame.row_mut(y, x, area.size.width) {
-                for (pixel, color) in row.iter_mut().zip(colors) {
-                    *pixel = S::store(blend(color, pixel.load(), opacity));
-                }
-                return Ok(());
-            }
-        }
         self.frame
-            .zip_area(area, &mut colors.into_iter(), |pixel, color| {
-                *pixel = S::store(blend(color, pixel.load(), opacity));
-            });
-        Ok(())
+            .blend_each(area, colors.into_iter().map(|color| (color, opacity)))
     }
 
     fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
@@ -389,31 +373,14 @@ where
                 return Ok(());
             }
         }
-        // Partly outside, or several rows: pixel by pixel.
-        let width = area.size.width.max(1);
-        for (k, (color, opacity)) in (0u32..).zip(pixels) {
-            if k / width >= area.size.height {
-                break;
-            }
-            let at = area.top_left + Point::new((k % width) as i32, (k / width) as i32);
-            if let Some(pixel) = self.pixel_mut(at) {
-                *pixel = S::store(blend(color, pixel.load(), opacity));
-            }
-        }
+        // Partly outside, or several rows: the shared clipped walk.
+        self.zip_area(area, &mut pixels.into_iter(), |pixel, (color, opacity)| {
+            *pixel = S::store(blend(color, pixel.load(), opacity));
+        });
         Ok(())
     }
 
     fn blend_solid(&mut self, area: &Rectangle, color: C, opacity: u8) -> Result<(), Infallible> {
-        if area.size.height == 1 {
-            // One row inside: anti-aliasing's edge pixels, one at a time.
-            let (y, x) = (area.top_left.y, area.top_left.x);
-            if let Some(row) = self.row_mut(y, x, area.size.width) {
-                for pixel in row {
-                    *pixel = S::store(blend(color, pixel.load(), opacity));
-                }
-                return Ok(());
-            }
-        }
         self.translucent(opacity).fill_solid(area, color)
     }
 }
