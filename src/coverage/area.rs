@@ -22,6 +22,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::Span;
 use crate::geometry::Triangle;
+use crate::setup::Lane;
 
 /// Fraction bits of positions.
 const FRAC: u32 = 12;
@@ -132,11 +133,13 @@ impl Edge {
 /// when both fit (on Cortex-M0 every division is a library call, a 64-bit one several).
 #[inline]
 fn floor_div(n: i64, d: i64) -> (i64, i64) {
-    let q = match (i32::try_from(n), i32::try_from(d)) {
-        (Ok(n), Ok(d)) => i64::from(n.div_euclid(d)),
-        _ => n.div_euclid(d),
-    };
-    (q, n - q * d)
+    match (i32::try_from(n), i32::try_from(d)) {
+        (Ok(n), Ok(d)) => {
+            let (q, r) = n.div_rem_floor(d);
+            (i64::from(q), i64::from(r))
+        }
+        _ => n.div_rem_floor(d),
+    }
 }
 
 /// `down * dx / dy` as quotient (rounded down) and remainder, for `down >= 0`, `dy > 0`: in
