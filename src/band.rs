@@ -14,8 +14,8 @@
 //! # Memory
 //!
 //! For a 320 x 240 `Rgb565` screen: a 16-row band is 320 x 16 x 2 = 10,240 bytes, its depth band
-//! another 10,240; a 200-triangle scene is 200 x `size_of::<SceneTriangle<Rgb565, _>>()`: 96
-//! bytes each on 32-bit microcontrollers (19,200 in all; 112 bytes on a 64-bit host). The full
+//! another 10,240; a 200-triangle scene is 200 x `size_of::<SceneTriangle<Rgb565, _>>()`: 112
+//! bytes each on 32-bit microcontrollers (22,400 in all; 128 bytes on a 64-bit host). The full
 //! frame and its depth buffer would be 153,600 bytes each.
 //!
 //! # Examples

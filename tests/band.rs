@@ -293,7 +293,7 @@ fn scene_sizes() {
         "16-row Rgb565 band: {} bytes, and as much again for its depth band",
         320 * 16 * 2
     );
-    // 112 bytes on 64-bit hosts (the texture's slice reference is 16 of them; 96 on 32-bit
-    // Cortex-M).
-    assert!(triangle <= 112, "{triangle} bytes per scene triangle");
+    // 128 bytes on 64-bit hosts (the texture's slice reference is 16 of them, a texture
+    // style's perspective 16 more); 112 on 32-bit Cortex-M.
+    assert!(triangle <= 128, "{triangle} bytes per scene triangle");
 }

@@ -7,7 +7,9 @@
 //! additions along it.
 
 mod barycentric;
+mod perspective;
 mod planes;
 
 pub use barycentric::{Barycentric, Location};
+pub(crate) use perspective::{mul_small, PerspectivePlanes};
 pub(crate) use planes::{Planes, TrackedPlanes};

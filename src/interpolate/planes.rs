@@ -232,6 +232,12 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         Some(planes)
     }
 
+    /// Planes that are zero everywhere: a placeholder.
+    #[inline(always)]
+    pub(crate) fn zero() -> Self {
+        Self::empty(Point::zero())
+    }
+
     #[inline(always)]
     fn empty(origin: Point) -> Self {
         Self {
@@ -369,9 +375,8 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
 
 /// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
 /// of about forty instructions on Cortex-M0.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(always)]
-fn widening_mul(a: u32, b: u32) -> u64 {
+pub(super) fn widening_mul(a: u32, b: u32) -> u64 {
     let (a_high, a_low) = (a >> 16, a & 0xFFFF);
     let (b_high, b_low) = (b >> 16, b & 0xFFFF);
     let middle = u64::from(a_high * b_low) + u64::from(a_low * b_high);

@@ -1,0 +1,489 @@
+//! Perspective-correct interpolation without a divider: attributes divided by `w` are linear
+//! on screen, so they are interpolated with the ordinary plane machinery, and the true values
+//! come back by one reciprocal at each end of a sub-span, with affine steps between.
+//!
+//! Per triangle, `1 / w` is normalised to `q = w_min / w` (at most 1, with [`Q_BITS`]
+//! fraction bits) and each attribute taken relative to the first vertex's, so that the
+//! precision of the division depends on how far the attribute changes across the triangle,
+//! not on how large it is. The reciprocal is a table of 64 first guesses and two Newton steps
+//! in integer products: no division and no float, on any core.
+
+use embedded_graphics::primitives::Rectangle;
+use fixed::types::I16F16;
+
+use super::{planes::widening_mul, TrackedPlanes};
+use crate::geometry::Shape;
+
+/// Fraction bits of the normalised reciprocal `q = w_min / w`.
+const Q_BITS: u32 = 30;
+
+/// Fraction bits of plane values beyond the raw 16.16 ones (the planes' default setup).
+const EXTRA_BITS: u32 = 16;
+
+/// First guesses of `2^31 / d` for `d` in `[2^15, 2^16)`: entry `i` serves
+/// `d` in `[(64 + i) * 512, (65 + i) * 512)` and is taken at the middle, within 0.78%.
+const FIRST_GUESS: [u16; 64] = {
+    let mut table = [0u16; 64];
+    let mut i = 0;
+    while i < 64 {
+        // 2^31 / ((64.5 + i) * 512) = 2^23 / (129 + 2i), rounded.
+        let middle = 129 + 2 * i as u32;
+        table[i] = ((2 * (1u32 << 23) + middle) / (2 * middle)) as u16;
+        i += 1;
+    }
+    table
+};
+
+/// `2^63 / d` for `d` in `[2^31, 2^32)`, within `2^-26` of it relatively, saturated to
+/// `u32::MAX` (which `d = 2^31` would exceed).
+///
+/// A first guess from [`FIRST_GUESS`] (7 bits), one Newton step `x + x (1 - d x)` in 32-bit
+/// products on the top 16 bits of `d` (14 bits) and one in 64-bit products on all of it (27
+/// bits). Each 64-bit product is four 16-bit multiplies on Cortex-M0 and one instruction on
+/// Cortex-M3 and up, so this costs about what one division does on Cortex-M4 and a tenth of
+/// the library's division on Cortex-M0.
+#[inline(never)]
+pub(crate) fn reciprocal(d: u32) -> u32 {
+    debug_assert!(d >= 1 << 31);
+    let top = d >> 16;
+    let guess = u32::from(FIRST_GUESS[((top >> 9) & 63) as usize]);
+    // 1 - top * guess / 2^31, below 2^24 in magnitude (the guess is within 0.78%).
+    let error = (1u32 << 31).wrapping_sub(top * guess) as i32;
+    // guess + guess * error / 2^31; both products below 2^30.
+    let better = guess as i32 + (((guess as i32) * (error >> 11)) >> 20);
+    // About 2^47 / top, so about 2^63 / d; at most 2^16 - 1 so that it fits after the shift.
+    let x = (better.clamp(1, 0xFFFF) as u32) << 16;
+    // 1 - d * x / 2^63, below 2^50 in magnitude (x is within 2^-13 of the reciprocal).
+    let error = ((1u64 << 63).wrapping_sub(mul_u32(d, x)) as i64) >> 20;
+    let correction = mul_i32_u32(error as i32, x) >> 43;
+    (i64::from(x) + correction).clamp(0, i64::from(u32::MAX)) as u32
+}
+
+/// `a * b` in full: one multiply on cores that have it, four 16-bit ones on Cortex-M0 (where
+/// a 64-bit multiply is a call of about forty instructions). The same bits either way.
+#[inline(always)]
+fn mul_u32(a: u32, b: u32) -> u64 {
+    if cfg!(target_has_atomic = "32") {
+        u64::from(a) * u64::from(b)
+    } else {
+        widening_mul(a, b)
+    }
+}
+
+/// `a * b` in full, for a signed `a`: [`mul_u32`] on the magnitude.
+#[inline(always)]
+fn mul_i32_u32(a: i32, b: u32) -> i64 {
+    if cfg!(target_has_atomic = "32") {
+        i64::from(a) * i64::from(b)
+    } else {
+        let magnitude = widening_mul(a.unsigned_abs(), b) as i64;
+        if a < 0 {
+            magnitude.wrapping_neg()
+        } else {
+            magnitude
+        }
+    }
+}
+
+/// The number of leading zeros of `value`: one instruction on Cortex-M3 and up, a binary
+/// search on Cortex-M0 (which has no such instruction; the library's is a call).
+#[inline(always)]
+fn leading_zeros(value: u32) -> u32 {
+    if cfg!(target_has_atomic = "32") {
+        return value.leading_zeros();
+    }
+    let (mut value, mut zeros) = (value, 0);
+    for bits in [16, 8, 4, 2, 1] {
+        if value >> (32 - bits) == 0 {
+            value <<= bits;
+            zeros += bits;
+        }
+    }
+    if value == 0 {
+        32
+    } else {
+        zeros
+    }
+}
+
+/// `w_min / w` for each vertex, with [`Q_BITS`] fraction bits (at least 1: ratios beyond 2^30
+/// lose precision, never the sign). Weights that are not positive count as the smallest
+/// positive `I16F16`.
+#[inline(always)]
+fn normalised(w: [I16F16; 3]) -> [u32; 3] {
+    let w = w.map(|w| w.to_bits().max(1) as u32);
+    let nearest = w[0].min(w[1]).min(w[2]);
+    w.map(|w| {
+        if w == nearest {
+            return 1 << Q_BITS;
+        }
+        // nearest * 2^30 / w, through 2^63 / (w * 2^zeros).
+        let zeros = leading_zeros(w);
+        let scaled = mul_u32(nearest, reciprocal(w << zeros));
+        ((scaled >> (33 - zeros)) as u32).max(1)
+    })
+}
+
+/// Planes of `q`, `(a - a_0) q` for each of `N` attributes, and what turns them back into the
+/// attributes: everything a perspective-correct span needs, set up once per triangle.
+#[derive(Clone, Debug)]
+pub(crate) struct PerspectivePlanes<const P: usize, const N: usize> {
+    /// `q` first, then the attributes times `q`; `P = N + 1`.
+    planes: TrackedPlanes<P>,
+    /// The first vertex's attributes, raw 16.16, bias included.
+    base: [i64; N],
+    /// The planes' change over a whole sub-span.
+    across: [i64; P],
+    /// Pixels per sub-span, a power of two.
+    sub_span: u32,
+}
+
+impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
+    /// Planes of `N` attributes (raw 16.16, one array per vertex, `bias` added to all) with
+    /// weights `w`, for sub-spans of `sub_span` pixels (8, 16 or 32), drawn into `window`;
+    /// `None` for degenerate triangles. Out of line: rarer than affine texturing, and once
+    /// per triangle.
+    #[inline(never)]
+    pub(crate) fn new<G: Shape>(
+        triangle: &G,
+        values: [[i64; N]; 3],
+        bias: i64,
+        w: [I16F16; 3],
+        sub_span: u32,
+        window: &Rectangle,
+    ) -> Option<Self> {
+        debug_assert_eq!(P, N + 1);
+        let q = normalised(w);
+        let base = values[0];
+        let weighted: [[i64; P]; 3] = core::array::from_fn(|i| {
+            core::array::from_fn(|k| {
+                if k == 0 {
+                    i64::from(q[i])
+                } else {
+                    // (a - a_0) * q rounded; below 2^35 in magnitude for 16.16 attributes.
+                    let delta = values[i][k - 1] - base[k - 1];
+                    let product = match i32::try_from(delta) {
+                        Ok(delta) => mul_i32_u32(delta, q[i]),
+                        Err(_) => delta.wrapping_mul(i64::from(q[i])),
+                    };
+                    (product + (1 << (Q_BITS - 1))) >> Q_BITS
+                }
+            })
+        });
+        let planes = triangle.planes_in(weighted, 0, window)?;
+        let across = core::array::from_fn(|k| planes.dx[k].wrapping_mul(i64::from(sub_span)));
+        Some(Self {
+            planes: TrackedPlanes::new(planes),
+            base: base.map(|b| b + bias),
+            across,
+            sub_span,
+        })
+    }
+
+    /// The sub-spans of the run of `len` pixels from `(x, y)`, walked by
+    /// [`PerspectivePlanes::next_sub_span`].
+    #[inline(always)]
+    pub(crate) fn sub_spans(&self, x: i32, y: i32, len: u32) -> SubSpans<P, N> {
+        let values = self.planes.at_exact(x, y);
+        let start = self.attributes(&values);
+        SubSpans {
+            values,
+            start,
+            x,
+            left: len,
+        }
+    }
+
+    /// The next sub-span of `walk`: up to a whole sub-span's pixels, whose last step ends on
+    /// the next one's first pixel, or on the run's last. Not generic over targets or
+    /// textures: one copy serves every perspective-correct style.
+    #[inline(never)]
+    pub(crate) fn next_sub_span(&self, walk: &mut SubSpans<P, N>) -> SubSpan<N> {
+        let (x, start) = (walk.x, walk.start);
+        let whole = walk.left > self.sub_span;
+        let (len, steps) = if whole {
+            (self.sub_span, self.sub_span)
+        } else {
+            (walk.left, walk.left - 1)
+        };
+        let end = if steps == 0 {
+            start
+        } else {
+            walk.values = if whole {
+                core::array::from_fn(|k| walk.values[k].wrapping_add(self.across[k]))
+            } else {
+                core::array::from_fn(|k| {
+                    let dx = self.planes.planes.dx[k];
+                    walk.values[k].wrapping_add(mul_small(dx, steps))
+                })
+            };
+            self.attributes(&walk.values)
+        };
+        walk.start = end;
+        walk.x = x.wrapping_add(len as i32);
+        walk.left -= len;
+        SubSpan {
+            x,
+            len,
+            start,
+            steps: core::array::from_fn(|k| sub_span_step(start[k], end[k], steps.max(1))),
+            end,
+        }
+    }
+
+    /// The attributes (raw 16.16, bias included) where the planes are `values`: one
+    /// reciprocal of `q` and one product per attribute.
+    #[inline(never)]
+    fn attributes(&self, values: &[i64; P]) -> [i64; N] {
+        // Inside the triangle q is at least the smallest vertex's; rounding may take it a
+        // unit lower, never to zero but for the most extreme ratios, which are clamped.
+        let q = (values[0] >> EXTRA_BITS).clamp(1, i64::from(u32::MAX)) as u32;
+        let zeros = leading_zeros(q);
+        let inverse = reciprocal(q << zeros);
+        // a - a_0 = (a - a_0) q / q = weighted * inverse * 2^zeros * 2^30 / 2^63.
+        core::array::from_fn(|k| {
+            let weighted = (values[k + 1] >> EXTRA_BITS)
+                .clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+            self.base[k] + (mul_i32_u32(weighted, inverse) >> (63 - Q_BITS - zeros))
+        })
+    }
+}
+
+/// Where a run's walk over its sub-spans is.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct SubSpans<const P: usize, const N: usize> {
+    /// The planes at the next sub-span's first pixel.
+    values: [i64; P],
+    /// The attributes there.
+    start: [i64; N],
+    /// Its column.
+    x: i32,
+    /// The run's pixels from there on.
+    pub(crate) left: u32,
+}
+
+/// A stretch of a run along which attributes step linearly: raw 16.16, bias included.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct SubSpan<const N: usize> {
+    /// The first pixel's column.
+    pub(crate) x: i32,
+    /// Pixels.
+    pub(crate) len: u32,
+    /// The attributes at the first pixel.
+    pub(crate) start: [i64; N],
+    /// Their steps per pixel, rounded towards zero.
+    pub(crate) steps: [i64; N],
+    /// Where the steps lead (the next sub-span's first pixel, or this one's last): the steps
+    /// taken within the sub-span stay between `start` and `end`.
+    pub(crate) end: [i64; N],
+}
+
+/// `value * small` (wrapping) for `small` below 2^16, in 32-bit multiplies where a 64-bit one
+/// is a call (Cortex-M0: three calls of about forty instructions for an `i64` product).
+#[inline(always)]
+pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
+    if cfg!(target_has_atomic = "32") {
+        return value.wrapping_mul(i64::from(small));
+    }
+    let (high, low) = ((value >> 32) as u32, value as u32);
+    let low = widening_mul(low, small);
+    (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
+}
+
+/// The per-pixel step from `start` to `end` over `pixels` (1 to 32) pixels, rounded towards
+/// zero, so that every value stepped to lies between the two: a shift for powers of two, else
+/// a multiply by a 32-bit reciprocal from a table, not a division. Within a unit (and 2^-31 of
+/// the difference) of the exact quotient.
+#[inline(always)]
+fn sub_span_step(start: i64, end: i64, pixels: u32) -> i64 {
+    /// floor(2^32 / n) for n from 2 to 32 (the powers of two unused).
+    const RECIPROCALS: [u32; 33] = {
+        let mut table = [0u32; 33];
+        let mut n = 2;
+        while n < 33 {
+            table[n] = ((1u64 << 32) / n as u64) as u32;
+            n += 1;
+        }
+        table
+    };
+    let delta = end.wrapping_sub(start);
+    let magnitude = delta.unsigned_abs().min(i32::MAX as u64) as u32;
+    let step = if pixels.is_power_of_two() {
+        magnitude >> pixels.trailing_zeros()
+    } else {
+        (mul_u32(magnitude, RECIPROCALS[(pixels & 31) as usize]) >> 32) as u32
+    };
+    if delta < 0 {
+        -i64::from(step)
+    } else {
+        i64::from(step)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reciprocals_are_within_2_to_the_minus_26() {
+        let check = |d: u32| {
+            let exact = (1u128 << 63) / u128::from(d);
+            let got = u128::from(reciprocal(d));
+            let want = exact.min(u128::from(u32::MAX));
+            let error = got.abs_diff(want);
+            assert!(error <= (want >> 26) + 1, "{d:#x}: {got} vs {exact}");
+        };
+        for d in (1u32 << 31..=u32::MAX).step_by(4099) {
+            check(d);
+        }
+        for i in 0..64u32 {
+            let edge = (64 + i) << 25;
+            for d in [
+                edge,
+                edge + 1,
+                edge.wrapping_sub(1) | 1 << 31,
+                edge | 0x01FF_FFFF,
+            ] {
+                check(d);
+            }
+        }
+        check(u32::MAX);
+    }
+
+    #[test]
+    fn leading_zeros_counts() {
+        for shift in 0..32 {
+            for value in [1u32 << shift, (1u32 << shift) | 1, u32::MAX >> (31 - shift)] {
+                assert_eq!(leading_zeros(value), value.leading_zeros(), "{value:#x}");
+            }
+        }
+        assert_eq!(leading_zeros(0), 32);
+    }
+
+    #[test]
+    fn small_products_wrap_as_64_bit_ones() {
+        for value in [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN,
+            0x1234_5678_9ABC,
+            -0xFFFF_FFFF,
+        ] {
+            for small in [0u32, 1, 7, 16, 31, 0xFFFF] {
+                assert_eq!(
+                    mul_small(value, small),
+                    value.wrapping_mul(i64::from(small))
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn steps_stay_between_the_ends() {
+        for (start, end) in [
+            (0i64, 100),
+            (100, 0),
+            (-5, 5),
+            (7, 7),
+            (0, 1 << 40),
+            (3, -(1 << 40)),
+            (45, -1_502_861),
+            (0, 0x7FFF_FFFF),
+            (0x7FFF_FFFF, 0),
+        ] {
+            for pixels in 1..=32u32 {
+                let step = sub_span_step(start, end, pixels);
+                let reached = start + step * i64::from(pixels);
+                let (low, high) = (start.min(end), start.max(end));
+                assert!((low..=high).contains(&reached), "{start} {end} {pixels}");
+                // Within a unit of the exact quotient.
+                let delta = i128::from(end - start);
+                if delta.abs() < i128::from(i32::MAX) {
+                    let off = (i128::from(step) * i128::from(pixels) - delta).abs();
+                    assert!(off <= i128::from(pixels), "{start} {end} {pixels}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn equal_weights_normalise_to_one() {
+        let w = I16F16::from_num(3.25);
+        assert_eq!(normalised([w; 3]), [1 << Q_BITS; 3]);
+        let q = normalised([w, w * 2, w * 16]);
+        assert_eq!(q[0], 1 << Q_BITS);
+        assert!(q[1].abs_diff(1 << (Q_BITS - 1)) <= 16, "{q:?}");
+        assert!(q[2].abs_diff(1 << (Q_BITS - 4)) <= 1, "{q:?}");
+        // Not positive: the smallest positive weight.
+        assert_eq!(
+            normalised([I16F16::ZERO, -w, I16F16::DELTA]),
+            [1 << Q_BITS; 3]
+        );
+    }
+
+    /// The documented bound: within 1/256 texel of the exact perspective coordinate, for `w`
+    /// ratios up to 1:256 and coordinates changing by less than 4096 texels (measured: at
+    /// most 85/65536 texel over these cases).
+    #[test]
+    #[allow(clippy::many_single_char_names)]
+    fn attributes_are_within_1_256_texel() {
+        use crate::Triangle;
+        use embedded_graphics::geometry::{Point, Size};
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = |range: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % range as u64) as i64
+        };
+        let window = Rectangle::new(Point::new(0, 0), Size::new(320, 240));
+        let mut checked = 0;
+        while checked < 20_000 {
+            let v = [(); 3].map(|()| Point::new(next(400) as i32 - 40, next(320) as i32 - 40));
+            let triangle = Triangle { vertices: v };
+            // w from 1/16 to 16, so ratios up to 1:256.
+            let w = [(); 3].map(|()| I16F16::from_bits((1 << 12) + next(1 << 20) as i32));
+            let origin = next(1 << 28) - (1 << 27);
+            let uv: [[i64; 2]; 3] = [(); 3].map(|()| [(); 2].map(|()| origin + next(4095 << 16)));
+            let Some(planes) = PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window)
+            else {
+                continue;
+            };
+            for _ in 0..8 {
+                let (x, y) = (next(320) as i32, next(240) as i32);
+                // Exact: barycentric weights over w, normalised (edge functions as weights).
+                let p = v.map(|p| (i128::from(p.x), i128::from(p.y)));
+                let (px, py) = (i128::from(x), i128::from(y));
+                let edge = |s: (i128, i128), t: (i128, i128)| {
+                    (t.0 - s.0) * (py - s.1) - (t.1 - s.1) * (px - s.0)
+                };
+                let mut e = [edge(p[1], p[2]), edge(p[2], p[0]), edge(p[0], p[1])];
+                let area: i128 = e.iter().sum();
+                if area < 0 {
+                    e = e.map(|e| -e);
+                }
+                if e.iter().any(|&e| e < 0) {
+                    continue; // outside
+                }
+                let wr = w.map(|w| i128::from(w.to_bits()));
+                let others = [wr[1] * wr[2], wr[0] * wr[2], wr[0] * wr[1]];
+                let den: i128 = (0..3).map(|i| e[i] * others[i]).sum();
+                let got = planes.attributes(&planes.planes.at_exact(x, y));
+                for k in 0..2 {
+                    let num: i128 = (0..3)
+                        .map(|i| e[i] * others[i] * i128::from(uv[i][k]))
+                        .sum();
+                    // |got - num / den| <= 256 raw units (1/256 texel).
+                    let off = (i128::from(got[k]) * den - num).abs();
+                    assert!(
+                        off <= 256 * den,
+                        "{v:?} {w:?} {uv:?} at ({x}, {y}): {got:?}"
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+}
