@@ -10,7 +10,7 @@ use trirast::{
     depth::{DepthBuffer, DepthTarget},
     geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
-    texture::{Filter, Texels},
+    texture::{Filter, Perspective, Texels},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
@@ -61,11 +61,16 @@ pub enum Mode {
     GouraudSub,
     GouraudZSub,
     TexNearestSub,
+    /// `TexNearest` and `TexBilinear` perspective-correct (`TextureStyle::with_perspective`,
+    /// 16-pixel sub-spans), with `w` from 1 at the top of the screen to 4 at the bottom (see
+    /// [`receding_w`]). Over the affine modes, what perspective costs.
+    PerspNearest,
+    PerspBilinear,
 }
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 13] = [
+    pub const ALL: [Mode; 15] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -79,6 +84,8 @@ impl Mode {
         Mode::GouraudSub,
         Mode::GouraudZSub,
         Mode::TexNearestSub,
+        Mode::PerspNearest,
+        Mode::PerspBilinear,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -97,6 +104,8 @@ impl Mode {
             Mode::GouraudSub => "gouraud-sub",
             Mode::GouraudZSub => "gouraud-z-sub",
             Mode::TexNearestSub => "nearest-sub",
+            Mode::PerspNearest => "persp-nearest",
+            Mode::PerspBilinear => "persp-bilinear",
         }
     }
 
@@ -112,7 +121,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 52] = [
+pub const EXPECTED: [(Mode, Scene, u32); 60] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -165,6 +174,14 @@ pub const EXPECTED: [(Mode, Scene, u32); 52] = [
     (Mode::TexNearestSub, Scene::Small, 0x33439920),
     (Mode::TexNearestSub, Scene::Mesh, 0x0a47a102),
     (Mode::TexNearestSub, Scene::Scene200, 0xf6c6fc4a),
+    (Mode::PerspNearest, Scene::Big, 0x449614e2),
+    (Mode::PerspNearest, Scene::Small, 0xd05a09ba),
+    (Mode::PerspNearest, Scene::Mesh, 0x7dc64243),
+    (Mode::PerspNearest, Scene::Scene200, 0xa704f74b),
+    (Mode::PerspBilinear, Scene::Big, 0x7a0e9b56),
+    (Mode::PerspBilinear, Scene::Small, 0xe96b75eb),
+    (Mode::PerspBilinear, Scene::Mesh, 0x6c64fc83),
+    (Mode::PerspBilinear, Scene::Scene200, 0x89274f22),
 ];
 
 /// The expected checksum of `mode` on `scene`.
@@ -255,6 +272,8 @@ pub fn draw<const N: usize>(
             Filter::Nearest,
             subpixel_triangle,
         ),
+        Mode::PerspNearest => draw_perspective(triangles, frame, work.texture, Filter::Nearest),
+        Mode::PerspBilinear => draw_perspective(triangles, frame, work.texture, Filter::Bilinear),
     }
 }
 
@@ -404,6 +423,32 @@ fn draw_textured<'t, G>(
             TextureStyle::new(texture, stretched_coordinates(t.vertices)).with_filter(filter);
         let _ = shape(t).draw_styled(&style, frame);
     }
+}
+
+/// `draw_textured` perspective-correct, with [`receding_w`].
+#[inline(never)]
+fn draw_perspective(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    texture: Texels<'_, Rgb565>,
+    filter: Filter,
+) {
+    for t in triangles {
+        let style = TextureStyle::new(texture, stretched_coordinates(t.vertices))
+            .with_filter(filter)
+            .with_perspective(Perspective::new(receding_w(t.vertices)));
+        let _ = Triangle {
+            vertices: t.vertices,
+        }
+        .draw_styled(&style, frame);
+    }
+}
+
+/// `w` growing from 1 at the screen's top to 4 at its bottom, as on a plane tilted away:
+/// every triangle not flat in y has different `w` at its vertices.
+pub fn receding_w(vertices: [Point; 3]) -> [I16F16; 3] {
+    let height = HEIGHT as i32;
+    vertices.map(|p| I16F16::ONE + I16F16::from_num(3 * p.y.clamp(0, height)) / height)
 }
 
 #[inline(never)]
