@@ -28,11 +28,11 @@ use fixed::types::{I16F16, I24F8};
 use tinybmp::Bmp;
 use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
-    geometry::{SubPixelTriangle, SubPoint},
+    geometry::{SubPixelTriangle, SubPoint, Viewport},
     mesh::MeshVertex,
     shading::Fragment,
     target::BlendTarget,
-    texture::{Filter, ImageTexels, Texels},
+    texture::{Filter, ImageTexels, Perspective, Texels, Wrap},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
 };
 
@@ -71,6 +71,57 @@ fn subpixel_motion() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
         exact.into_styled(style).draw(&mut lower).unwrap();
     }
     (display, OutputSettingsBuilder::new().scale(4).build())
+}
+
+/// A checkered floor receding to the horizon, as two triangles: mapped affinely (left), the
+/// checks bend along the diagonal the triangles share; perspective-correct (right), with each
+/// vertex's `w` from `Viewport::project_clip`, the rows of checks stay straight.
+fn perspective_floor() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
+    let (w, h) = (160u32, 120u32);
+    let (light, dark) = (Rgb565::new(29, 52, 16), Rgb565::new(5, 14, 9));
+    // 8 x 8 texels, four checks of 4 x 4.
+    let checks: Vec<Rgb565> = (0..64)
+        .map(|i| {
+            if (i % 8 / 4 + i / 32) % 2 == 0 {
+                light
+            } else {
+                dark
+            }
+        })
+        .collect();
+    let texture = Texels::new(&checks, 8, 8).unwrap();
+    let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(w, h)));
+    // The floor 1.5 below the eye, 14 wide, from 1.2 to 60 ahead; 8 texels a unit.
+    let corner = |x: f32, z: f32| {
+        let clip = [x * 0.75, -1.5, 0.0, z].map(I16F16::from_num);
+        let uv = [(x + 7.0) * 8.0, z * 8.0].map(I16F16::from_num);
+        (viewport.project_clip(clip), uv)
+    };
+    let quad = [
+        corner(-7.0, 60.0),
+        corner(7.0, 60.0),
+        corner(7.0, 1.2),
+        corner(-7.0, 1.2),
+    ];
+    let mut display = SimulatorDisplay::new(Size::new(2 * w + 4, h));
+    for (x0, perspective) in [(0, false), (w as i32 + 4, true)] {
+        let mut pixels = vec![Rgb565::new(17, 42, 29); (w * h) as usize];
+        let mut frame = Framebuffer::new(&mut pixels, w, h).unwrap();
+        for [a, b, c] in [[0, 1, 2], [0, 2, 3]] {
+            let [(pa, ta), (pb, tb), (pc, tc)] = [quad[a], quad[b], quad[c]];
+            let mut style = TextureStyle::new(texture, [ta, tb, tc]).with_wrap(Wrap::Repeat);
+            if perspective {
+                style = style.with_perspective(Perspective::new([pa.w, pb.w, pc.w]));
+            }
+            let floor = SubPixelTriangle::new(pa.position, pb.position, pc.position);
+            floor.into_styled(style).draw(&mut frame).unwrap();
+        }
+        for (i, c) in pixels.iter().enumerate() {
+            let p = Point::new(x0 + (i as u32 % w) as i32, (i as u32 / w) as i32);
+            Pixel(p, to_888(*c)).draw(&mut display).unwrap();
+        }
+    }
+    (display, OutputSettingsBuilder::new().scale(3).build())
 }
 
 /// A gauge, aliased (left) and with anti-aliased edges (right): each edge pixel blended over
@@ -197,6 +248,11 @@ const SCENES: &[Scene] = &[
         name: "subpixel",
         about: "a needle turning 1 degree a frame: whole-pixel vertices (top) jump, 1/256-pixel ones (bottom) turn",
         render: subpixel_motion,
+    },
+    Scene {
+        name: "perspective",
+        about: "a checkered floor to the horizon: affine textures (left) bend, perspective-correct ones (right) do not",
+        render: perspective_floor,
     },
     Scene {
         name: "shader",

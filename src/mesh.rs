@@ -2,19 +2,20 @@
 //! styles, optional back-face culling and an optional depth test.
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point};
-use fixed::types::I24F8;
+use fixed::types::{I16F16, I24F8};
 
 use crate::{
     depth::DepthTarget,
-    geometry::{Orientation, Shape, SubPixelTriangle, SubPoint, Triangle},
+    geometry::{Orientation, Projected, Shape, SubPixelTriangle, SubPoint, Triangle},
     shading::TriangleStyle,
     Error,
 };
 
 /// A mesh vertex: where it lands on screen and, for depth-tested drawing, its depth.
 ///
-/// Implemented for `Point` and `SubPoint` (depth 0) and for `(Point, u16)` and `(SubPoint, u16)`;
-/// implement it for your own vertex type
+/// Implemented for `Point` and `SubPoint` (depth 0), for `(Point, u16)` and `(SubPoint, u16)`,
+/// and for [`Projected`] (what [`Viewport::project_clip`](crate::geometry::Viewport::project_clip)
+/// gives); implement it for your own vertex type
 /// to carry colours, texture coordinates or normals alongside.
 ///
 /// # Examples
@@ -57,7 +58,7 @@ pub trait MeshVertex {
     ///
     /// ```
     /// use embedded_graphics::prelude::*;
-    /// use fixed::types::I24F8;
+    /// use fixed::types::{I16F16, I24F8};
     /// use trirast::{geometry::SubPoint, mesh::MeshVertex};
     ///
     /// assert_eq!(Point::new(1, 2).subpixel_position(), SubPoint::from(Point::new(1, 2)));
@@ -67,6 +68,48 @@ pub trait MeshVertex {
     /// ```
     fn subpixel_position(&self) -> SubPoint {
         SubPoint::from_point(self.position())
+    }
+
+    /// The vertex's `w` (its distance along the view direction, from the projection), for
+    /// perspective-correct textures ([`Perspective`](crate::texture::Perspective)); 1 unless
+    /// given.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::Rectangle};
+    /// use fixed::types::I16F16;
+    /// use trirast::{geometry::Viewport, mesh::MeshVertex};
+    ///
+    /// assert_eq!(Point::new(1, 2).w(), I16F16::ONE);
+    /// let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// let far = viewport.project_clip([0, 0, 0, 5].map(I16F16::from_num));
+    /// assert_eq!(far.w(), I16F16::from_num(5));
+    /// ```
+    fn w(&self) -> I16F16 {
+        I16F16::ONE
+    }
+}
+
+impl MeshVertex for Projected {
+    #[inline]
+    fn position(&self) -> Point {
+        self.position.position()
+    }
+
+    #[inline]
+    fn depth(&self) -> u16 {
+        self.depth
+    }
+
+    #[inline]
+    fn subpixel_position(&self) -> SubPoint {
+        self.position
+    }
+
+    #[inline]
+    fn w(&self) -> I16F16 {
+        self.w
     }
 }
 
@@ -349,7 +392,7 @@ impl<'a, V: MeshVertex> Mesh<'a, V> {
     ///
     /// ```
     /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
-    /// use fixed::types::I24F8;
+    /// use fixed::types::{I16F16, I24F8};
     /// use trirast::{geometry::SubPoint, mesh::{Cull, Mesh}, FlatStyle, Framebuffer};
     ///
     /// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));

@@ -16,7 +16,7 @@ use trirast::{
     depth::{DepthBuffer, DepthTarget},
     geometry::{SubPoint, Viewport},
     mesh::{Cull, Mesh, MeshVertex},
-    texture::{Filter, Texels},
+    texture::{Filter, Perspective, Texels},
     Framebuffer, TextureStyle,
 };
 
@@ -45,7 +45,8 @@ pub fn render(
 }
 
 /// Draws frame `frame` of `frames` into `area` of `scene` (a target with its depth buffer):
-/// back faces culled, each face `texture`d, filtered bilinearly and lit per vertex.
+/// back faces culled, each face `texture`d in perspective, filtered bilinearly and lit per
+/// vertex.
 pub fn draw<D>(
     scene: &mut DepthTarget<'_, '_, D>,
     area: Rectangle,
@@ -62,6 +63,7 @@ where
         TextureStyle::new(texture, corners.map(|v| v.uv))
             .with_filter(Filter::Bilinear)
             .with_modulation(corners.map(|v| gray(v.light)))
+            .with_perspective(Perspective::new(corners.map(MeshVertex::w)))
     })
 }
 
@@ -74,6 +76,8 @@ const ONE: i64 = 1 << 16;
 pub struct CubeVertex {
     pub position: SubPoint,
     pub depth: u16,
+    /// Distance along the view direction, for perspective-correct texturing.
+    pub w: I16F16,
     pub light: u8,
     /// Texture coordinates in texels (the texture is `TEXTURE` x `TEXTURE`).
     pub uv: [I16F16; 2],
@@ -91,6 +95,10 @@ impl trirast::mesh::MeshVertex for CubeVertex {
 
     fn depth(&self) -> u16 {
         self.depth
+    }
+
+    fn w(&self) -> I16F16 {
+        self.w
     }
 }
 
@@ -161,6 +169,7 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
     let mut out = [CubeVertex {
         position: SubPoint::default(),
         depth: 0,
+        w: I16F16::ONE,
         light: 0,
         uv: [I16F16::ZERO; 2],
     }; 24];
@@ -170,14 +179,14 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
             let [x, y, z] = corner.map(|c| c * ONE * 4 / 5);
             let (x, z) = ((x * ca + z * sa) >> 16, (z * ca - x * sa) >> 16);
             let (y, z) = ((y * cb - z * sb) >> 16, (y * sb + z * cb) >> 16);
-            // Camera 3.5 units away looking down -z; perspective with focal length 1.8.
+            // Camera 3.5 units away looking down -z; perspective with focal length 1.8: clip
+            // coordinates, whose w is the view distance. The viewport divides by it.
             let depth = 7 * ONE / 2 - z;
-            let project = |v: i64| v * (ONE * 9 / 5) / depth;
-            let ndc_x = (project(x) * aspect) >> 16;
-            let ndc_y = project(y);
+            let clip_x = (((x * (ONE * 9 / 5)) >> 16) * aspect) >> 16;
+            let clip_y = (y * (ONE * 9 / 5)) >> 16;
             // Linear depth: view distance 2 maps to NDC -1, distance 5 to 1.
-            let ndc_z = (depth - 7 * ONE / 2) * 2 / 3;
-            let (position, depth16) = viewport.project_subpixel([ndc_x, ndc_y, ndc_z].map(|v| {
+            let clip_z = (((depth - 7 * ONE / 2) * 2 / 3) * depth) >> 16;
+            let projected = viewport.project_clip([clip_x, clip_y, clip_z, depth].map(|v| {
                 I16F16::from_bits(v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32)
             }));
             // Light falls off with the squared distance to the light.
@@ -185,8 +194,9 @@ pub fn vertices(frame: u32, frames: u32, area: Rectangle) -> [CubeVertex; 24] {
             let d2 = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) >> 16;
             let level = (3200 * ONE / (d2 + ONE) - 100).clamp(40, 255);
             out[face * 4 + k] = CubeVertex {
-                position,
-                depth: depth16,
+                position: projected.position,
+                depth: projected.depth,
+                w: projected.w,
                 light: level as u8,
                 uv: CORNERS[k].map(|t| I16F16::from_bits(t << 16)),
             };

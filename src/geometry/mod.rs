@@ -8,4 +8,4 @@ mod viewport;
 pub use shape::Shape;
 pub use subpixel::{SubPixelTriangle, SubPoint};
 pub use triangle::{Orientation, Triangle};
-pub use viewport::Viewport;
+pub use viewport::{Projected, Viewport};

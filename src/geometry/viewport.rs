@@ -151,6 +151,57 @@ impl Viewport {
         (self.to_subpixel([x, y]), Self::to_depth(z))
     }
 
+    /// Projects a point in clip coordinates `[x, y, z, w]` (what a projection matrix gives):
+    /// NDC `[x, y, z] / w` mapped as [`Viewport::project_subpixel`] maps it, computed exactly
+    /// from the clip coordinates and rounded once (halves up), with `w` kept for
+    /// perspective-correct texturing ([`Perspective`](crate::texture::Perspective)).
+    ///
+    /// Points at or behind the viewer (`w` not positive) must be clipped away beforehand:
+    /// they are projected as if `w` were the smallest positive `I16F16`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::Rectangle};
+    /// use fixed::types::{I16F16, I24F8};
+    /// use trirast::geometry::Viewport;
+    ///
+    /// let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(320, 240)));
+    /// let clip = [0.5, 0.25, 0.0, 2.0].map(I16F16::from_num);
+    /// let v = viewport.project_clip(clip);
+    /// // NDC (0.25, 0.125, 0): x = 1.25 * 160 = 200, y = 0.875 * 120 = 105.
+    /// assert_eq!((v.position.x, v.position.y), (I24F8::from_num(200), I24F8::from_num(105)));
+    /// assert_eq!((v.depth, v.w), (32768, I16F16::from_num(2)));
+    /// ```
+    #[must_use]
+    pub fn project_clip(&self, [x, y, z, w]: [I16F16; 4]) -> Projected {
+        let Size { width, height } = self.area.size;
+        let w = w.max(I16F16::DELTA);
+        let wide = |v: I16F16| i128::from(v.to_bits());
+        let (x, y, z, raw_w) = (wide(x), wide(y), wide(z), wide(w));
+        // origin + (v / w + 1) * side / 2 pixels, in 1/256: (v + w) * side * 128 / w.
+        let map = |v: i128, side: u32, origin: i32| {
+            let twice = (v + raw_w) * i128::from(side) * 256;
+            let offset = (twice + raw_w).div_euclid(2 * raw_w);
+            let units = (i128::from(origin) * 256 + offset)
+                .clamp(i128::from(i32::MIN), i128::from(i32::MAX));
+            I24F8::from_bits(units as i32)
+        };
+        // (z / w + 1) * 65535 / 2.
+        let twice = (z + raw_w) * i128::from(u16::MAX);
+        let depth = (twice + raw_w)
+            .div_euclid(2 * raw_w)
+            .clamp(0, i128::from(u16::MAX)) as u16;
+        Projected {
+            position: SubPoint::new(
+                map(x, width, self.area.top_left.x),
+                map(-y, height, self.area.top_left.y),
+            ),
+            depth,
+            w,
+        }
+    }
+
     /// The depth for NDC `z`: -1 (near) is 0, 1 (far) is 65535, clamped between.
     ///
     /// # Examples
@@ -219,6 +270,30 @@ impl Viewport {
         let y = unmap(pixel.y, self.area.top_left.y, height);
         [x, I16F16::from_bits(y.to_bits().saturating_neg())]
     }
+}
+
+/// A vertex projected by [`Viewport::project_clip`]: where it lands (to 1/256 pixel), its
+/// depth, and its `w` for perspective-correct texturing. A [`MeshVertex`](crate::mesh::MeshVertex).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{prelude::*, primitives::Rectangle};
+/// use fixed::types::I16F16;
+/// use trirast::{geometry::Viewport, mesh::MeshVertex};
+///
+/// let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(64, 64)));
+/// let v = viewport.project_clip([0, 0, 0, 3].map(I16F16::from_num));
+/// assert_eq!((v.position(), v.depth(), v.w()), (Point::new(32, 32), 32768, I16F16::from_num(3)));
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Projected {
+    /// Where the vertex lands.
+    pub position: SubPoint,
+    /// Its depth (0 = near plane, 65535 = far plane).
+    pub depth: u16,
+    /// Its `w`: distance along the view direction, as the projection gave it.
+    pub w: I16F16,
 }
 
 /// `value` clamped to the `i32` range.
@@ -290,5 +365,35 @@ mod tests {
             assert!(d >= last);
             last = d;
         }
+    }
+
+    #[test]
+    #[allow(clippy::many_single_char_names)]
+    fn clip_coordinates_divide_exactly() {
+        let vp = Viewport::new(Rectangle::new(Point::new(-7, 3), Size::new(320, 240)));
+        let mut seed = 0x1234_5678_9ABC_DEF0u64;
+        let mut next = |range: i32| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * range as u64 + 1)) as i32 - range
+        };
+        for _ in 0..10_000 {
+            let [x, y, z] = [(); 3].map(|()| I16F16::from_bits(next(1 << 17)));
+            // w = 1: exactly the NDC mapping.
+            let one = vp.project_clip([x, y, z, I16F16::ONE]);
+            let (position, depth) = vp.project_subpixel([x, y, z]);
+            assert_eq!((one.position, one.depth), (position, depth));
+            // Scaling all four by k changes nothing.
+            let k = next(40).unsigned_abs().max(1) as i32;
+            let w = I16F16::from_bits(next(1 << 18).abs().max(1));
+            let base = vp.project_clip([x, y, z, w]);
+            let scaled = vp.project_clip([x, y, z, w].map(|v| I16F16::from_bits(v.to_bits() * k)));
+            assert_eq!((base.position, base.depth), (scaled.position, scaled.depth));
+        }
+        // Behind the viewer: no panic, saturated.
+        let behind = vp.project_clip([I16F16::ONE, -I16F16::ONE, I16F16::ZERO, -I16F16::ONE]);
+        assert_eq!(behind.w, I16F16::DELTA);
+        assert_eq!(behind.position.x.to_bits(), i32::MAX);
     }
 }
