@@ -85,25 +85,34 @@ fn mul_i32_u32(a: i32, b: u32) -> i64 {
     }
 }
 
-/// The number of leading zeros of `value`: one instruction on Cortex-M3 and up, a binary
-/// search on Cortex-M0 (which has no such instruction; the library's is a call).
+/// `value >> shift` for `shift` from 1 to 63, in 32-bit halves: a variable 64-bit shift is a
+/// library call on Cortex-M0. The same bits as the 64-bit shift.
 #[inline(always)]
-fn leading_zeros(value: u32) -> u32 {
-    if cfg!(target_has_atomic = "32") {
-        return value.leading_zeros();
-    }
-    let (mut value, mut zeros) = (value, 0);
-    for bits in [16, 8, 4, 2, 1] {
-        if value >> (32 - bits) == 0 {
-            value <<= bits;
-            zeros += bits;
-        }
-    }
-    if value == 0 {
-        32
+fn shift_right(value: i64, shift: u32) -> i64 {
+    let (high, low) = ((value >> 32) as i32, value as u32);
+    if shift >= 32 {
+        i64::from(high >> (shift - 32))
     } else {
-        zeros
+        let low = (low >> shift) | ((high as u32) << (32 - shift));
+        (i64::from(high >> shift) << 32) | i64::from(low)
     }
+}
+
+/// `q` shifted left until its top bit is set, and by how much: one instruction on
+/// Cortex-M3 and up; on Cortex-M0 (no such instruction) a loop, short for the values drawing
+/// meets (q near 1, so a few shifts).
+#[inline(always)]
+fn normalise(q: u32) -> (u32, u32) {
+    if cfg!(target_has_atomic = "32") {
+        let zeros = q.leading_zeros();
+        return (q << zeros, zeros);
+    }
+    let (mut q, mut zeros) = (q, 0);
+    while q < 1 << 31 {
+        q <<= 1;
+        zeros += 1;
+    }
+    (q, zeros)
 }
 
 /// `w_min / w` for each vertex, with [`Q_BITS`] fraction bits (at least 1: ratios beyond 2^30
@@ -118,8 +127,8 @@ fn normalised(w: [I16F16; 3]) -> [u32; 3] {
             return 1 << Q_BITS;
         }
         // nearest * 2^30 / w, through 2^63 / (w * 2^zeros).
-        let zeros = leading_zeros(w);
-        let scaled = mul_u32(nearest, reciprocal(w << zeros));
+        let (normal, zeros) = normalise(w);
+        let scaled = mul_u32(nearest, reciprocal(normal));
         ((scaled >> (33 - zeros)) as u32).max(1)
     })
 }
@@ -134,8 +143,9 @@ pub(crate) struct PerspectivePlanes<const P: usize, const N: usize> {
     base: [i64; N],
     /// The planes' change over a whole sub-span.
     across: [i64; P],
-    /// Pixels per sub-span, a power of two.
+    /// Pixels per sub-span, a power of two, and its logarithm.
     sub_span: u32,
+    shift: u32,
 }
 
 impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
@@ -177,6 +187,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             base: base.map(|b| b + bias),
             across,
             sub_span,
+            shift: sub_span.trailing_zeros(),
         })
     }
 
@@ -201,24 +212,30 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     pub(crate) fn next_sub_span(&self, walk: &mut SubSpans<P, N>) -> SubSpan<N> {
         let (x, start) = (walk.x, walk.start);
         let whole = walk.left > self.sub_span;
-        let (len, steps) = if whole {
-            (self.sub_span, self.sub_span)
-        } else {
-            (walk.left, walk.left - 1)
-        };
-        let end = if steps == 0 {
-            start
-        } else {
-            walk.values = if whole {
-                core::array::from_fn(|k| walk.values[k].wrapping_add(self.across[k]))
-            } else {
-                core::array::from_fn(|k| {
-                    let dx = self.planes.planes.dx[k];
-                    walk.values[k].wrapping_add(mul_small(dx, steps))
-                })
-            };
-            self.attributes(&walk.values)
-        };
+        let len = if whole { self.sub_span } else { walk.left };
+        let mut end = start;
+        let mut steps = [0; N];
+        if whole {
+            for k in 0..P {
+                walk.values[k] = walk.values[k].wrapping_add(self.across[k]);
+            }
+            end = self.attributes(&walk.values);
+            for k in 0..N {
+                // Towards zero, by a shift: sub-spans are powers of two.
+                let delta = end[k].wrapping_sub(start[k]);
+                let magnitude = shift_right(delta.wrapping_abs(), self.shift);
+                steps[k] = if delta < 0 { -magnitude } else { magnitude };
+            }
+        } else if len > 1 {
+            for k in 0..P {
+                let dx = self.planes.planes.dx[k];
+                walk.values[k] = walk.values[k].wrapping_add(mul_small(dx, len - 1));
+            }
+            end = self.attributes(&walk.values);
+            for k in 0..N {
+                steps[k] = sub_span_step(start[k], end[k], len - 1);
+            }
+        }
         walk.start = end;
         walk.x = x.wrapping_add(len as i32);
         walk.left -= len;
@@ -226,7 +243,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             x,
             len,
             start,
-            steps: core::array::from_fn(|k| sub_span_step(start[k], end[k], steps.max(1))),
+            steps,
             end,
         }
     }
@@ -238,14 +255,17 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         // Inside the triangle q is at least the smallest vertex's; rounding may take it a
         // unit lower, never to zero but for the most extreme ratios, which are clamped.
         let q = (values[0] >> EXTRA_BITS).clamp(1, i64::from(u32::MAX)) as u32;
-        let zeros = leading_zeros(q);
-        let inverse = reciprocal(q << zeros);
+        let (normal, zeros) = normalise(q);
+        let inverse = reciprocal(normal);
         // a - a_0 = (a - a_0) q / q = weighted * inverse * 2^zeros * 2^30 / 2^63.
-        core::array::from_fn(|k| {
+        let mut out = [0; N];
+        for k in 0..N {
             let weighted = (values[k + 1] >> EXTRA_BITS)
                 .clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
-            self.base[k] + (mul_i32_u32(weighted, inverse) >> (63 - Q_BITS - zeros))
-        })
+            let product = mul_i32_u32(weighted, inverse);
+            out[k] = self.base[k].wrapping_add(shift_right(product, 63 - Q_BITS - zeros));
+        }
+        out
     }
 }
 
@@ -291,12 +311,11 @@ pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
 }
 
 /// The per-pixel step from `start` to `end` over `pixels` (1 to 32) pixels, rounded towards
-/// zero, so that every value stepped to lies between the two: a shift for powers of two, else
-/// a multiply by a 32-bit reciprocal from a table, not a division. Within a unit (and 2^-31 of
-/// the difference) of the exact quotient.
+/// zero, so that every value stepped to lies between the two: a multiply by a 32-bit
+/// reciprocal from a table, not a division. Within a unit of the exact quotient.
 #[inline(always)]
 fn sub_span_step(start: i64, end: i64, pixels: u32) -> i64 {
-    /// floor(2^32 / n) for n from 2 to 32 (the powers of two unused).
+    /// floor(2^32 / n) for n from 2 to 32.
     const RECIPROCALS: [u32; 33] = {
         let mut table = [0u32; 33];
         let mut n = 2;
@@ -308,10 +327,10 @@ fn sub_span_step(start: i64, end: i64, pixels: u32) -> i64 {
     };
     let delta = end.wrapping_sub(start);
     let magnitude = delta.unsigned_abs().min(i32::MAX as u64) as u32;
-    let step = if pixels.is_power_of_two() {
-        magnitude >> pixels.trailing_zeros()
+    let step = if pixels == 1 {
+        magnitude
     } else {
-        (mul_u32(magnitude, RECIPROCALS[(pixels & 31) as usize]) >> 32) as u32
+        (mul_u32(magnitude, RECIPROCALS[pixels.min(32) as usize]) >> 32) as u32
     };
     if delta < 0 {
         -i64::from(step)
@@ -351,13 +370,30 @@ mod tests {
     }
 
     #[test]
-    fn leading_zeros_counts() {
+    fn normalising_and_shifting_are_the_plain_operations() {
         for shift in 0..32 {
             for value in [1u32 << shift, (1u32 << shift) | 1, u32::MAX >> (31 - shift)] {
-                assert_eq!(leading_zeros(value), value.leading_zeros(), "{value:#x}");
+                let zeros = value.leading_zeros();
+                assert_eq!(normalise(value), (value << zeros, zeros), "{value:#x}");
             }
         }
-        assert_eq!(leading_zeros(0), 32);
+        for value in [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN,
+            0x1234_5678_9ABC_DEF0,
+            -0x7654_3210_0123,
+        ] {
+            for shift in 1..64 {
+                assert_eq!(
+                    shift_right(value, shift),
+                    value >> shift,
+                    "{value} >> {shift}"
+                );
+            }
+        }
     }
 
     #[test]
