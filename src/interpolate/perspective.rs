@@ -17,9 +17,6 @@ use crate::geometry::Shape;
 /// Fraction bits of the normalised reciprocal `q = w_min / w`.
 const Q_BITS: u32 = 30;
 
-/// Fraction bits of plane values beyond the raw 16.16 ones (the planes' default setup).
-const EXTRA_BITS: u32 = 16;
-
 /// First guesses of `2^31 / d` for `d` in `[2^15, 2^16)`: entry `i` serves
 /// `d` in `[(64 + i) * 512, (65 + i) * 512)` and is taken at the middle, within 0.78%.
 const FIRST_GUESS: [u16; 64] = {
@@ -139,8 +136,8 @@ fn normalised(w: [I16F16; 3]) -> [u32; 3] {
 pub(crate) struct PerspectivePlanes<const P: usize, const N: usize> {
     /// `q` first, then the attributes times `q`; `P = N + 1`.
     planes: TrackedPlanes<P>,
-    /// The first vertex's attributes, raw 16.16, bias included.
-    base: [i64; N],
+    /// The first vertex's attributes, raw 16.16, bias included (wrapping).
+    base: [i32; N],
     /// The planes' change over a whole sub-span.
     across: [i64; P],
     /// Pixels per sub-span, a power of two, and its logarithm.
@@ -184,7 +181,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         let across = core::array::from_fn(|k| planes.dx[k].wrapping_mul(i64::from(sub_span)));
         Some(Self {
             planes: TrackedPlanes::new(planes),
-            base: base.map(|b| b + bias),
+            base: base.map(|b| b.wrapping_add(bias) as i32),
             across,
             sub_span,
             shift: sub_span.trailing_zeros(),
@@ -223,7 +220,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             for k in 0..N {
                 // Towards zero, by a shift: sub-spans are powers of two.
                 let delta = end[k].wrapping_sub(start[k]);
-                let magnitude = shift_right(delta.wrapping_abs(), self.shift);
+                let magnitude = (delta.unsigned_abs() >> self.shift) as i32;
                 steps[k] = if delta < 0 { -magnitude } else { magnitude };
             }
         } else if len > 1 {
@@ -248,24 +245,39 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         }
     }
 
-    /// The attributes (raw 16.16, bias included) where the planes are `values`: one
-    /// reciprocal of `q` and one product per attribute.
+    /// The attributes (raw 16.16, bias included, wrapping) where the planes are `values`:
+    /// one reciprocal of `q` and one product per attribute.
     #[inline(never)]
-    fn attributes(&self, values: &[i64; P]) -> [i64; N] {
+    fn attributes(&self, values: &[i64; P]) -> [i32; N] {
         // Inside the triangle q is at least the smallest vertex's; rounding may take it a
         // unit lower, never to zero but for the most extreme ratios, which are clamped.
-        let q = (values[0] >> EXTRA_BITS).clamp(1, i64::from(u32::MAX)) as u32;
+        let q = high_bits(values[0]).max(1) as u32;
         let (normal, zeros) = normalise(q);
         let inverse = reciprocal(normal);
-        // a - a_0 = (a - a_0) q / q = weighted * inverse * 2^zeros * 2^30 / 2^63.
+        // a - a_0 = (a - a_0) q / q = weighted * inverse * 2^zeros * 2^30 / 2^63; q is below
+        // 2^31, so the shift is 2 to 32.
+        let shift = 63 - Q_BITS - zeros;
         let mut out = [0; N];
         for k in 0..N {
-            let weighted = (values[k + 1] >> EXTRA_BITS)
-                .clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
-            let product = mul_i32_u32(weighted, inverse);
-            out[k] = self.base[k].wrapping_add(shift_right(product, 63 - Q_BITS - zeros));
+            let product = mul_i32_u32(high_bits(values[k + 1]), inverse);
+            out[k] = self.base[k].wrapping_add(shift_right(product, shift) as i32);
         }
         out
+    }
+}
+
+/// `value >> 16` saturated to `i32`, from the two halves of `value`: a plane value in
+/// 2^-32 units back to raw 16.16.
+#[inline(always)]
+fn high_bits(value: i64) -> i32 {
+    let high = (value >> 32) as i32;
+    let bits = (high << 16) | ((value as u32) >> 16) as i32;
+    if high >> 15 == high >> 31 {
+        bits
+    } else if high < 0 {
+        i32::MIN
+    } else {
+        i32::MAX
     }
 }
 
@@ -275,7 +287,7 @@ pub(crate) struct SubSpans<const P: usize, const N: usize> {
     /// The planes at the next sub-span's first pixel.
     values: [i64; P],
     /// The attributes there.
-    start: [i64; N],
+    start: [i32; N],
     /// Its column.
     x: i32,
     /// The run's pixels from there on.
@@ -290,12 +302,12 @@ pub(crate) struct SubSpan<const N: usize> {
     /// Pixels.
     pub(crate) len: u32,
     /// The attributes at the first pixel.
-    pub(crate) start: [i64; N],
+    pub(crate) start: [i32; N],
     /// Their steps per pixel, rounded towards zero.
-    pub(crate) steps: [i64; N],
+    pub(crate) steps: [i32; N],
     /// Where the steps lead (the next sub-span's first pixel, or this one's last): the steps
     /// taken within the sub-span stay between `start` and `end`.
-    pub(crate) end: [i64; N],
+    pub(crate) end: [i32; N],
 }
 
 /// `value * small` (wrapping) for `small` below 2^16, in 32-bit multiplies where a 64-bit one
@@ -312,9 +324,9 @@ pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
 
 /// The per-pixel step from `start` to `end` over `pixels` (1 to 32) pixels, rounded towards
 /// zero, so that every value stepped to lies between the two: a multiply by a 32-bit
-/// reciprocal from a table, not a division. Within a unit of the exact quotient.
+/// reciprocal from a table, not a division. Within 1.5 units of the exact quotient.
 #[inline(always)]
-fn sub_span_step(start: i64, end: i64, pixels: u32) -> i64 {
+fn sub_span_step(start: i32, end: i32, pixels: u32) -> i32 {
     /// floor(2^32 / n) for n from 2 to 32.
     const RECIPROCALS: [u32; 33] = {
         let mut table = [0u32; 33];
@@ -326,16 +338,17 @@ fn sub_span_step(start: i64, end: i64, pixels: u32) -> i64 {
         table
     };
     let delta = end.wrapping_sub(start);
-    let magnitude = delta.unsigned_abs().min(i32::MAX as u64) as u32;
-    let step = if pixels == 1 {
+    let magnitude = delta.unsigned_abs();
+    let step = if pixels <= 1 {
         magnitude
     } else {
         (mul_u32(magnitude, RECIPROCALS[pixels.min(32) as usize]) >> 32) as u32
     };
+    // Below 2^31 unless pixels is 1 and the difference is -2^31: wraps alike either way.
     if delta < 0 {
-        -i64::from(step)
+        (step as i32).wrapping_neg()
     } else {
-        i64::from(step)
+        step as i32
     }
 }
 
@@ -419,27 +432,27 @@ mod tests {
     #[test]
     fn steps_stay_between_the_ends() {
         for (start, end) in [
-            (0i64, 100),
+            (0i32, 100),
             (100, 0),
             (-5, 5),
             (7, 7),
-            (0, 1 << 40),
-            (3, -(1 << 40)),
+            (0, 1 << 30),
+            (3, -(1 << 30)),
             (45, -1_502_861),
             (0, 0x7FFF_FFFF),
             (0x7FFF_FFFF, 0),
         ] {
             for pixels in 1..=32u32 {
-                let step = sub_span_step(start, end, pixels);
+                let step = i64::from(sub_span_step(start, end, pixels));
+                let (start, end) = (i64::from(start), i64::from(end));
                 let reached = start + step * i64::from(pixels);
                 let (low, high) = (start.min(end), start.max(end));
                 assert!((low..=high).contains(&reached), "{start} {end} {pixels}");
-                // Within a unit of the exact quotient.
+                // Within a unit and a half of the exact quotient (a unit of rounding, and
+                // |delta| / 2^32 from the reciprocal).
                 let delta = i128::from(end - start);
-                if delta.abs() < i128::from(i32::MAX) {
-                    let off = (i128::from(step) * i128::from(pixels) - delta).abs();
-                    assert!(off <= i128::from(pixels), "{start} {end} {pixels}");
-                }
+                let off = (i128::from(step) * i128::from(pixels) - delta).abs();
+                assert!(2 * off <= 3 * i128::from(pixels), "{start} {end} {pixels}");
             }
         }
     }
@@ -506,7 +519,9 @@ mod tests {
                 let wr = w.map(|w| i128::from(w.to_bits()));
                 let others = [wr[1] * wr[2], wr[0] * wr[2], wr[0] * wr[1]];
                 let den: i128 = (0..3).map(|i| e[i] * others[i]).sum();
-                let got = planes.attributes(&planes.planes.at_exact(x, y));
+                let got = planes
+                    .attributes(&planes.planes.at_exact(x, y))
+                    .map(i64::from);
                 for k in 0..2 {
                     let num: i128 = (0..3)
                         .map(|i| e[i] * others[i] * i128::from(uv[i][k]))

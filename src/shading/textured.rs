@@ -676,7 +676,7 @@ where
         D: DrawTarget<Color = T::Color>,
     {
         const TO_COORDINATE: u32 = COORDINATE_BITS - 16;
-        let to_coordinate = |a: [i64; 2]| a.map(|a| a << TO_COORDINATE);
+        let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
         let tint = self.tint.as_ref().map(|t| (t.at(run.x, run.y), t.step));
         let mut sub_spans = planes.sub_spans(run.x, run.y, run.len);
         while sub_spans.left > 0 {
@@ -686,8 +686,12 @@ where
                 y: run.y,
                 len: sub_span.len,
             };
-            let (start, end) = (to_coordinate(sub_span.start), to_coordinate(sub_span.end));
-            let inside = self.inside(start, end.map(Some));
+            // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
+            let inside = (0..2).all(|k| {
+                let limit = (self.limits[k] >> TO_COORDINATE) as u32;
+                (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
+            });
+            let start = to_coordinate(sub_span.start);
             let pixels = sub_span.x.wrapping_sub(run.x) as u32;
             let tint = tint.map(|(at, step)| {
                 core::array::from_fn(|k| at[k].wrapping_add(step[k].wrapping_mul(pixels)))
