@@ -11,5 +11,5 @@ mod perspective;
 mod planes;
 
 pub use barycentric::{Barycentric, Location};
-pub(crate) use perspective::{mul_small, PerspectivePlanes};
+pub(crate) use perspective::{mul_small, PerspectivePlanes, SubSpan};
 pub(crate) use planes::{Planes, TrackedPlanes};

@@ -12,7 +12,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{mul_small, PerspectivePlanes, Planes, TrackedPlanes},
+    interpolate::{mul_small, PerspectivePlanes, Planes, SubSpan, TrackedPlanes},
     texture::{
         Axis, Clamped, Direct, Filter, Perspective, Pow2Repeated, Repeated, TexelSource, Wrap,
         COORDINATE_BITS,
@@ -434,6 +434,8 @@ struct TexturedPainter<'a, T, const M: usize> {
     addressing: Addressing,
     /// Coordinates (in 2^-46 texels) below these, and not negative, need no addressing.
     limits: [i64; 2],
+    /// The same in raw 16.16, for perspective sub-spans.
+    sub_span_limits: [u32; 2],
 }
 
 impl<'a, T, const M: usize> TexturedPainter<'a, T, M>
@@ -478,6 +480,8 @@ where
             bilinear,
             addressing,
             limits: [reach(size.width), reach(size.height)],
+            sub_span_limits: [reach(size.width), reach(size.height)]
+                .map(|limit| (limit >> TO_COORDINATE) as u32),
         }
     }
 
@@ -641,17 +645,14 @@ where
         }
     }
 
-    /// [`TexturedPainter::shade_run`] out of line, for perspective sub-spans: affine runs
-    /// keep the span loops inline (measured: a call per run costs 3 to 5% per small textured
-    /// triangle on Cortex-M0 and M4F), perspective ones share this copy.
+    /// [`TexturedPainter::shade_run`] out of line, for perspective sub-spans of row `y`:
+    /// affine runs keep the span loops inline (measured: a call per run costs 3 to 5% per
+    /// small textured triangle on Cortex-M0 and M4F), perspective ones share this copy.
     #[inline(never)]
-    #[allow(clippy::too_many_arguments)]
     fn shade_sub_span<D>(
         &self,
-        run: Span,
-        start: [i64; 2],
-        steps: [i64; 2],
-        inside: bool,
+        sub_span: &SubSpan<2>,
+        y: i32,
         tint: Option<[u32; M]>,
         offset: Point,
         target: &mut D,
@@ -659,6 +660,18 @@ where
     where
         D: DrawTarget<Color = T::Color>,
     {
+        // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
+        let inside = (0..2).all(|k| {
+            let limit = self.sub_span_limits[k];
+            (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
+        });
+        let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
+        let run = Span {
+            x: sub_span.x,
+            y,
+            len: sub_span.len,
+        };
+        let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
         self.shade_run(run, start, steps, inside, tint, offset, target)
     }
 
@@ -675,33 +688,22 @@ where
     where
         D: DrawTarget<Color = T::Color>,
     {
-        const TO_COORDINATE: u32 = COORDINATE_BITS - 16;
-        let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
         let tint = self.tint.as_ref().map(|t| (t.at(run.x, run.y), t.step));
         let mut sub_spans = planes.sub_spans(run.x, run.y, run.len);
         while sub_spans.left > 0 {
             let sub_span = planes.next_sub_span(&mut sub_spans);
-            let piece = Span {
-                x: sub_span.x,
-                y: run.y,
-                len: sub_span.len,
-            };
-            // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
-            let inside = (0..2).all(|k| {
-                let limit = (self.limits[k] >> TO_COORDINATE) as u32;
-                (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
-            });
-            let start = to_coordinate(sub_span.start);
-            let pixels = sub_span.x.wrapping_sub(run.x) as u32;
             let tint = tint.map(|(at, step)| {
+                let pixels = sub_span.x.wrapping_sub(run.x) as u32;
                 core::array::from_fn(|k| at[k].wrapping_add(step[k].wrapping_mul(pixels)))
             });
-            let steps = to_coordinate(sub_span.steps);
-            self.shade_sub_span(piece, start, steps, inside, tint, offset, target)?;
+            self.shade_sub_span(&sub_span, run.y, tint, offset, target)?;
         }
         Ok(())
     }
 }
+
+/// From raw 16.16 coordinates to the 2^-46 texels the span loops step.
+const TO_COORDINATE: u32 = COORDINATE_BITS - 16;
 
 /// `steps * gradient`, or `None` if it might not fit `i64`. One 64 x 16-bit multiply for runs
 /// under 2^16 pixels and gradients under 2^47 (two texels per pixel), whose product fits: a
