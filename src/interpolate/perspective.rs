@@ -178,13 +178,14 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             })
         });
         let planes = triangle.planes_in(weighted, 0, window)?;
-        let across = core::array::from_fn(|k| planes.dx[k].wrapping_mul(i64::from(sub_span)));
+        let shift = sub_span.trailing_zeros();
+        let across = core::array::from_fn(|k| planes.dx[k] << shift);
         Some(Self {
             planes: TrackedPlanes::new(planes),
             base: base.map(|b| b.wrapping_add(bias) as i32),
             across,
             sub_span,
-            shift: sub_span.trailing_zeros(),
+            shift,
         })
     }
 

@@ -306,12 +306,13 @@ where
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
-        // Perspective planes stay here, lent to the painter, which is moved around by value.
+        // Perspective planes stay here, lent to the painter, which is moved around by value;
+        // borrowed where they were returned (moving them out of the option is a copy).
         let perspective_planes;
         let (coordinates, perspective) = match self.perspective {
             Some(perspective) if !perspective.is_affine() => {
-                perspective_planes = new_perspective_planes(triangle, self, perspective, window)?;
-                (Planes::zero(), Some(&perspective_planes))
+                perspective_planes = new_perspective_planes(triangle, self, perspective, window);
+                (Planes::zero(), Some(perspective_planes.as_ref()?))
             }
             _ => (coordinate_planes(triangle, self, window)?, None),
         };
