@@ -43,7 +43,7 @@ use trirast::{
     band::{Bands, Scene as BandScene, SceneStyle},
     coverage::{for_each_span, Span},
     depth::{DepthBuffer, DepthTarget},
-    texture::{Filter, Texels, Wrap},
+    texture::{Filter, Perspective, Texels, Wrap},
     FillRule, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
@@ -60,6 +60,8 @@ const MODES: &[&str] = &[
     "tex-bilinear-repeat",
     "tex-nearest-clamp",
     "tex-nearest-odd",
+    "tex-nearest-persp",
+    "tex-bilinear-persp",
     "eg-flat",
     "fill-baseline",
     "coverage",
@@ -155,8 +157,10 @@ where
         _ => {
             let kind = mode.strip_prefix("tex-").expect("mode checked in main");
             let (filter, wrap, side, tiled) = match kind {
-                "nearest" => (Filter::Nearest, Wrap::Clamp, 64, false),
-                "bilinear" | "modulated" => (Filter::Bilinear, Wrap::Clamp, 64, false),
+                "nearest" | "nearest-persp" => (Filter::Nearest, Wrap::Clamp, 64, false),
+                "bilinear" | "modulated" | "bilinear-persp" => {
+                    (Filter::Bilinear, Wrap::Clamp, 64, false)
+                }
                 "nearest-repeat" => (Filter::Nearest, Wrap::Repeat, 64, true),
                 "bilinear-repeat" => (Filter::Bilinear, Wrap::Repeat, 64, true),
                 "nearest-clamp" => (Filter::Nearest, Wrap::Clamp, 64, true),
@@ -165,7 +169,9 @@ where
             };
             let texture = Texels::new(&texels[..(side * side) as usize], side, side).unwrap();
             let modulated = kind == "modulated";
-            texture_frame(scene, texture, filter, wrap, tiled, modulated, target);
+            let perspective = kind.ends_with("-persp");
+            let options = (filter, wrap, tiled, modulated, perspective);
+            texture_frame(scene, texture, options, target);
         }
     }
 }
@@ -286,10 +292,7 @@ where
 fn texture_frame<D>(
     scene: &[SceneTriangle],
     texture: Texels<'_, Rgb565>,
-    filter: Filter,
-    wrap: Wrap,
-    tiled: bool,
-    modulated: bool,
+    (filter, wrap, tiled, modulated, perspective): (Filter, Wrap, bool, bool, bool),
     target: &mut D,
 ) where
     D: DrawTarget<Color = Rgb565>,
@@ -307,6 +310,10 @@ fn texture_frame<D>(
             .with_wrap(wrap);
         if modulated {
             style = style.with_modulation(t.vertex_colors);
+        }
+        if perspective {
+            // w from 1 at the top of the screen to 4 at the bottom, as the firmware's modes.
+            style = style.with_perspective(Perspective::new(modes::receding_w(t.vertices)));
         }
         Triangle::new(a, b, c)
             .into_styled(style)
