@@ -17,8 +17,9 @@ use proptest::prelude::*;
 use trirast::{
     band::{Bands, Scene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
+    shading::Fragment,
     texture::{Filter, Perspective, SubSpan, Texels, Wrap},
-    Framebuffer, TextureStyle, Triangle,
+    Framebuffer, ShaderStyle, TextureStyle, Triangle,
 };
 
 /// Texture side, in texels: each texel a colour of its own.
@@ -188,8 +189,86 @@ fn check_case(case: &Case) -> Result<(), TestCaseError> {
     Ok(())
 }
 
+/// Draws `case` with a perspective-correct shader of the two coordinates and checks every
+/// fragment's values against the straight line between the exact perspective values at the
+/// ends of its sub-span (the same bound as for textures, in attribute units); with equal `w`,
+/// the fragments are the affine shader's, bit for bit.
+fn check_shader_case(case: &Case) -> Result<(), TestCaseError> {
+    let record = |w: Option<[I16F16; 3]>| {
+        let fragments = std::cell::RefCell::new(Vec::new());
+        let style = ShaderStyle::new(case.uv, |f: Fragment<2>| {
+            fragments.borrow_mut().push(f);
+            Gray8::WHITE
+        });
+        let triangle = Triangle {
+            vertices: case.vertices,
+        };
+        let mut target = Recorder::<Gray8>::new(case.window);
+        match w {
+            Some(w) => {
+                let perspective = Perspective::new(w).with_sub_span(case.sub_span);
+                triangle
+                    .into_styled(style.with_perspective(perspective))
+                    .draw(&mut target)
+            }
+            None => triangle.into_styled(style).draw(&mut target),
+        }
+        .unwrap();
+        assert_eq!(target.outside_writes, 0);
+        fragments.into_inner()
+    };
+    let fragments = record(Some(case.w));
+    let sub_span = case.sub_span.pixels() as i32;
+    // Each row's run from its fragments (one run per row, left to right).
+    let mut rows = std::collections::BTreeMap::<i32, (i32, i32)>::new();
+    for f in &fragments {
+        let e = rows
+            .entry(f.position.y)
+            .or_insert((f.position.x, f.position.x));
+        e.0 = e.0.min(f.position.x);
+        e.1 = e.1.max(f.position.x);
+    }
+    for f in &fragments {
+        let (x, y) = (f.position.x, f.position.y);
+        prop_assert!(reference_covers(case.vertices, f.position, Rule::TopLeft));
+        let (first, last) = rows[&y];
+        let start = first + (x - first) / sub_span * sub_span;
+        let end = (start + sub_span).min(last);
+        let exact = |x: i32| exact_uv(case.vertices, case.uv, case.w, Point::new(x, y)).unwrap();
+        let (a, b) = (exact(start), exact(end));
+        let t = if end == start {
+            0.0
+        } else {
+            f64::from(x - start) / f64::from(end - start)
+        };
+        let slack = 1.0 / 256.0 + f64::from(x - start) / 65536.0 + 1e-9;
+        for k in 0..2 {
+            let line = a[k] + (b[k] - a[k]) * t;
+            let got = f.values[k].to_num::<f64>();
+            prop_assert!(
+                (got - line).abs() <= slack,
+                "({}, {}) {}: {} vs {}",
+                x,
+                y,
+                k,
+                got,
+                line
+            );
+        }
+    }
+    // Equal w: the affine shader's fragments.
+    let w = case.w[0];
+    prop_assert_eq!(record(Some([w; 3])), record(None));
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(600))]
+
+    #[test]
+    fn shader_attributes_follow_the_exact_perspective(seed in any::<u64>()) {
+        check_shader_case(&random_case(seed))?;
+    }
 
     #[test]
     fn nearest_follows_the_exact_perspective(seed in any::<u64>()) {

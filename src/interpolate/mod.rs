@@ -1,15 +1,17 @@
 //! Interpolation, the stage between coverage and shading: barycentric coordinates and plane
 //! equations of per-vertex attributes.
 //!
-//! The public part is the point query [`Triangle::barycentric`](crate::Triangle::barycentric).
-//! Drawing uses fixed-point plane equations set up once per triangle (one reciprocal of the
-//! area for all gradients), evaluated exactly at the start of each span and stepped by
-//! additions along it.
+//! The public part is the point query [`Triangle::barycentric`](crate::Triangle::barycentric)
+//! and the [`Perspective`] option of the texture and shader styles. Drawing uses fixed-point
+//! plane equations set up once per triangle (one reciprocal of the area for all gradients),
+//! evaluated exactly at the start of each span and stepped by additions along it; in
+//! perspective, attributes over `w` are the planes, divided at the ends of sub-spans.
 
 mod barycentric;
 mod perspective;
 mod planes;
 
 pub use barycentric::{Barycentric, Location};
-pub(crate) use perspective::{mul_small, PerspectivePlanes, SubSpan};
+pub(crate) use perspective::{mul_small, PerspectivePlanes, Stretch};
+pub use perspective::{Perspective, SubSpan};
 pub(crate) use planes::{Planes, TrackedPlanes};

@@ -14,6 +14,143 @@ use fixed::types::I16F16;
 use super::{planes::widening_mul, TrackedPlanes};
 use crate::geometry::Shape;
 
+/// How many pixels apart perspective-correct interpolation divides: the true texture coordinates
+/// are computed at both ends of each sub-span of a row, and stepped linearly between.
+///
+/// Shorter sub-spans follow the true curve more closely and divide more often. Within a
+/// sub-span the error is what linear steps between two exact points give: at most
+/// `L^2 * |d²u/dx²| / 8` texels for a sub-span of `L` pixels, small unless the texture is
+/// magnified steeply along the row.
+///
+/// # Examples
+///
+/// ```
+/// use trirast::interpolate::SubSpan;
+///
+/// assert_eq!(SubSpan::default(), SubSpan::Pixels16);
+/// assert_eq!(SubSpan::Pixels8.pixels(), 8);
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub enum SubSpan {
+    /// 8 pixels.
+    Pixels8,
+    /// 16 pixels, as Quake divided.
+    #[default]
+    Pixels16,
+    /// 32 pixels.
+    Pixels32,
+}
+
+impl SubSpan {
+    /// The pixels per sub-span.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use trirast::interpolate::SubSpan;
+    ///
+    /// assert_eq!(SubSpan::Pixels32.pixels(), 32);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn pixels(self) -> u32 {
+        match self {
+            Self::Pixels8 => 8,
+            Self::Pixels16 => 16,
+            Self::Pixels32 => 32,
+        }
+    }
+}
+
+/// Perspective-correct interpolation, for textures ([`TextureStyle::with_perspective`]) and
+/// shader attributes ([`ShaderStyle::with_perspective`]): each vertex's `w` (its distance
+/// along the view direction, as the projection's fourth coordinate gives it), and the
+/// sub-span length.
+///
+/// Attributes divided by `w` and `1 / w` itself are linear on screen; the true attributes are
+/// recovered from them at both ends of every [`SubSpan`] of a row, by a reciprocal from a
+/// table and two Newton steps in integer arithmetic (no division, no float), and stepped
+/// linearly between.
+///
+/// - At the ends of sub-spans the attributes are within 1/256 (a texel, for texture
+///   coordinates) of the exact rational perspective ones, for `w` ratios up to 1:256 within a
+///   triangle and attributes changing by less than 4096 across it.
+/// - Between, they follow the straight line between the two ends (see [`SubSpan`]), stepped
+///   in 2^-16 (each pixel adds at most 2^-16 of rounding).
+/// - Equal `w` at the three vertices (a face parallel to the screen) draws exactly what the
+///   affine interpolation draws.
+///
+/// `w` must be positive; values that are not count as the smallest positive `I16F16`. Only the
+/// ratios between the three matter. Texture modulation colours stay affine on screen.
+///
+/// [`TextureStyle::with_perspective`]: crate::TextureStyle::with_perspective
+/// [`ShaderStyle::with_perspective`]: crate::ShaderStyle::with_perspective
+///
+/// # Examples
+///
+/// ```
+/// use fixed::types::I16F16;
+/// use trirast::interpolate::{Perspective, SubSpan};
+///
+/// let w = [1, 4, 4].map(I16F16::from_num);
+/// let perspective = Perspective::new(w).with_sub_span(SubSpan::Pixels8);
+/// assert_eq!(perspective.sub_span.pixels(), 8);
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Perspective {
+    /// Each vertex's `w`, in the triangle's vertex order.
+    pub w: [I16F16; 3],
+    /// Pixels between divisions; [`SubSpan::Pixels16`] by default.
+    pub sub_span: SubSpan,
+}
+
+impl Perspective {
+    /// Perspective with weights `w`, one per vertex, and 16-pixel sub-spans.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I16F16;
+    /// use trirast::interpolate::{Perspective, SubSpan};
+    ///
+    /// let perspective = Perspective::new([I16F16::ONE; 3]);
+    /// assert_eq!(perspective.sub_span, SubSpan::Pixels16);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(w: [I16F16; 3]) -> Self {
+        Self {
+            w,
+            sub_span: SubSpan::Pixels16,
+        }
+    }
+
+    /// The same with another sub-span length.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use fixed::types::I16F16;
+    /// use trirast::interpolate::{Perspective, SubSpan};
+    ///
+    /// let perspective = Perspective::new([I16F16::ONE; 3]).with_sub_span(SubSpan::Pixels32);
+    /// assert_eq!(perspective.sub_span, SubSpan::Pixels32);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_sub_span(mut self, sub_span: SubSpan) -> Self {
+        self.sub_span = sub_span;
+        self
+    }
+
+    /// Whether the three weights are equal: the mapping is then affine.
+    #[inline]
+    pub(crate) fn is_affine(&self) -> bool {
+        let [a, b, c] = self.w.map(|w| w.to_bits().max(1));
+        a == b && b == c
+    }
+}
+
 /// Fraction bits of the normalised reciprocal `q = w_min / w`.
 const Q_BITS: u32 = 30;
 
@@ -207,7 +344,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     /// the next one's first pixel, or on the run's last. Not generic over targets or
     /// textures: one copy serves every perspective-correct style.
     #[inline(never)]
-    pub(crate) fn next_sub_span(&self, walk: &mut SubSpans<P, N>) -> SubSpan<N> {
+    pub(crate) fn next_sub_span(&self, walk: &mut SubSpans<P, N>) -> Stretch<N> {
         let (x, start) = (walk.x, walk.start);
         let whole = walk.left > self.sub_span;
         let len = if whole { self.sub_span } else { walk.left };
@@ -237,7 +374,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         walk.start = end;
         walk.x = x.wrapping_add(len as i32);
         walk.left -= len;
-        SubSpan {
+        Stretch {
             x,
             len,
             start,
@@ -297,7 +434,7 @@ pub(crate) struct SubSpans<const P: usize, const N: usize> {
 
 /// A stretch of a run along which attributes step linearly: raw 16.16, bias included.
 #[derive(Copy, Clone, Debug)]
-pub(crate) struct SubSpan<const N: usize> {
+pub(crate) struct Stretch<const N: usize> {
     /// The first pixel's column.
     pub(crate) x: i32,
     /// Pixels.

@@ -16,5 +16,5 @@ pub use channels::ChannelColor;
 pub use flat::FlatStyle;
 pub use gouraud::GouraudStyle;
 pub use paint::TriangleStyle;
-pub use shader::{Fragment, ShaderStyle};
+pub use shader::{Fragment, PerspectiveShaderStyle, ShaderStyle};
 pub use textured::TextureStyle;

@@ -1,14 +1,20 @@
 //! Per-pixel shading by a user function of interpolated attributes.
 
-use embedded_graphics::{geometry::Point, pixelcolor::PixelColor, primitives::Rectangle};
+use embedded_graphics::{
+    draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor, primitives::Rectangle,
+};
 use fixed::types::I16F16;
 
 use super::{
-    paint::{drawable_style, PaintVisitor, ShaderPainter},
-    spans::PlanesShader,
+    paint::{drawable_style, PaintVisitor, Painter, ShaderPainter},
+    spans::{shade_span, PlanesShader, SteppedShader},
     TriangleStyle,
 };
-use crate::{coverage::FillRule, geometry::Shape};
+use crate::{
+    coverage::{FillRule, Span},
+    geometry::Shape,
+    interpolate::{Perspective, PerspectivePlanes},
+};
 
 /// What a shader sees at one pixel: its position and the `N` attributes interpolated there.
 ///
@@ -116,7 +122,154 @@ impl<const N: usize, F> ShaderStyle<N, F> {
         self.fill_rule = fill_rule;
         self
     }
+
+    /// The same style with its attributes interpolated perspective-correct, with each vertex's
+    /// `w` in `perspective` (see [`Perspective`] for the accuracy): for attributes of a surface
+    /// seen at an angle, such as texture coordinates of a procedural texture. Drawn for 1 to 8
+    /// attributes.
+    ///
+    /// # Examples
+    ///
+    /// A checker computed from perspective-correct coordinates, on a floor whose far edge
+    /// (`w` = 4) is four times as far as its near one: the checks' boundary halfway up the
+    /// texture lands a fifth of the way down from the far edge.
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+    /// use fixed::types::I16F16;
+    /// use trirast::{interpolate::Perspective, shading::Fragment, Framebuffer, ShaderStyle, Triangle};
+    ///
+    /// let (near, far) = (I16F16::ONE, I16F16::from_num(4));
+    /// let v = [[I16F16::ZERO], [I16F16::ZERO], [I16F16::ONE]];
+    /// let style = ShaderStyle::new(v, |f: Fragment<1>| (f.values[0] >= 0.5).into())
+    ///     .with_perspective(Perspective::new([far, far, near]));
+    /// let mut pixels = [BinaryColor::Off; 40 * 40];
+    /// let mut display = Framebuffer::new(&mut pixels, 40, 40)?;
+    /// let triangle = Triangle::new(Point::new(0, 0), Point::new(40, 0), Point::new(0, 40));
+    /// triangle.into_styled(style).draw(&mut display).unwrap();
+    /// assert_eq!(display.pixel(Point::new(1, 7)), Some(BinaryColor::Off));
+    /// assert_eq!(display.pixel(Point::new(1, 9)), Some(BinaryColor::On));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn with_perspective(self, perspective: Perspective) -> PerspectiveShaderStyle<N, F> {
+        PerspectiveShaderStyle {
+            style: self,
+            perspective,
+        }
+    }
 }
+
+/// A [`ShaderStyle`] whose attributes are interpolated perspective-correct: made by
+/// [`ShaderStyle::with_perspective`], drawn for 1 to 8 attributes.
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::pixelcolor::Gray8;
+/// use fixed::types::I16F16;
+/// use trirast::{interpolate::Perspective, shading::Fragment, ShaderStyle};
+///
+/// let w = [1, 2, 3].map(I16F16::from_num);
+/// let style = ShaderStyle::new([[I16F16::ZERO]; 3], |f: Fragment<1>| Gray8::new(f.values[0].to_num()))
+///     .with_perspective(Perspective::new(w));
+/// assert_eq!(style.perspective.w, w);
+/// ```
+#[derive(Copy, Clone, Debug)]
+pub struct PerspectiveShaderStyle<const N: usize, F> {
+    /// The style: attributes, shader and fill rule.
+    pub style: ShaderStyle<N, F>,
+    /// Each vertex's `w` and the sub-span length.
+    pub perspective: Perspective,
+}
+
+/// The painter of a perspective-correct shader: each run cut into sub-spans, whose ends get
+/// their exact attributes and whose pixels step linearly between them.
+struct PerspectiveShaderPainter<'a, const P: usize, const N: usize, F> {
+    planes: &'a PerspectivePlanes<P, N>,
+    shader: &'a F,
+}
+
+impl<C, const P: usize, const N: usize, F> Painter for PerspectiveShaderPainter<'_, P, N, F>
+where
+    C: PixelColor,
+    F: Fn(Fragment<N>) -> C,
+{
+    type Color = C;
+
+    #[inline]
+    fn paint<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let mut sub_spans = self.planes.sub_spans(run.x, run.y, run.len);
+        while sub_spans.left > 0 {
+            let stretch = self.planes.next_sub_span(&mut sub_spans);
+            let shader = SteppedShader {
+                start: stretch.start,
+                steps: stretch.steps,
+                shade: |position, raw: [u32; N]| {
+                    (self.shader)(Fragment {
+                        position,
+                        values: raw.map(|v| I16F16::from_bits(v as i32)),
+                    })
+                },
+            };
+            let piece = Span {
+                x: stretch.x,
+                y: run.y,
+                len: stretch.len,
+            };
+            shade_span(&shader, piece, offset, target)?;
+        }
+        Ok(())
+    }
+}
+
+/// The perspective shader style for each attribute count: its planes hold one more plane
+/// (`1 / w`) than it has attributes, which a generic `N` cannot name.
+macro_rules! perspective_shader_style {
+    ($($n:literal => $p:literal),*) => {$(
+        impl<C, F> TriangleStyle for PerspectiveShaderStyle<$n, F>
+        where
+            C: PixelColor,
+            F: Fn(Fragment<$n>) -> C,
+        {
+            type Color = C;
+
+            #[inline]
+            fn fill_rule(&self) -> FillRule {
+                self.style.fill_rule
+            }
+
+            #[inline(always)]
+            fn paint<G: Shape, V: PaintVisitor<C>>(
+                &self,
+                triangle: &G,
+                window: &Rectangle,
+                visitor: V,
+            ) -> Option<V::Output> {
+                if self.perspective.is_affine() {
+                    return self.style.paint(triangle, window, visitor);
+                }
+                let values = self.style.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
+                let (w, sub_span) = (self.perspective.w, self.perspective.sub_span.pixels());
+                let planes =
+                    PerspectivePlanes::<$p, $n>::new(triangle, values, 0, w, sub_span, window);
+                let painter = PerspectiveShaderPainter {
+                    planes: planes.as_ref()?,
+                    shader: &self.style.shader,
+                };
+                Some(visitor.visit(painter))
+            }
+        }
+
+        drawable_style!([C, F] PerspectiveShaderStyle<$n, F> where C: PixelColor, F: Fn(Fragment<$n>) -> C);
+    )*};
+}
+
+perspective_shader_style!(1 => 2, 2 => 3, 3 => 4, 4 => 5, 5 => 6, 6 => 7, 7 => 8, 8 => 9);
 
 impl<C, const N: usize, F> TriangleStyle for ShaderStyle<N, F>
 where

@@ -120,3 +120,37 @@ where
         color
     }
 }
+
+/// A shader of `N` values stepping linearly from `start` by `steps` (raw 16.16) from the first
+/// pixel of the span it shades, coloured by `shade(position, values)`: a perspective-correct
+/// sub-span of a user shader.
+pub(crate) struct SteppedShader<const N: usize, F> {
+    pub(crate) start: [i32; N],
+    pub(crate) steps: [i32; N],
+    pub(crate) shade: F,
+}
+
+impl<C, const N: usize, F> PixelShader for SteppedShader<N, F>
+where
+    C: PixelColor,
+    F: Fn(Point, [u32; N]) -> C,
+{
+    type Color = C;
+    type State = (Point, [u32; N], [u32; N]);
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        let as_raw = |v: [i32; N]| v.map(|v| v as u32);
+        (Point::new(x, y), as_raw(self.start), as_raw(self.steps))
+    }
+
+    #[inline(always)]
+    fn next(&self, (position, values, step): &mut Self::State) -> C {
+        let color = (self.shade)(*position, *values);
+        position.x = position.x.wrapping_add(1);
+        for k in 0..N {
+            values[k] = values[k].wrapping_add(step[k]);
+        }
+        color
+    }
+}

@@ -12,7 +12,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{mul_small, PerspectivePlanes, Planes, SubSpan, TrackedPlanes},
+    interpolate::{mul_small, PerspectivePlanes, Planes, Stretch, TrackedPlanes},
     texture::{
         Axis, Clamped, Direct, Filter, Perspective, Pow2Repeated, Repeated, TexelSource, Wrap,
         COORDINATE_BITS,
@@ -652,7 +652,7 @@ where
     #[inline(never)]
     fn shade_sub_span<D>(
         &self,
-        sub_span: &SubSpan<2>,
+        sub_span: &Stretch<2>,
         y: i32,
         tint: Option<[u32; M]>,
         offset: Point,
