@@ -299,31 +299,35 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         debug_assert_eq!(P, N + 1);
         let q = normalised(w);
         let base = values[0];
-        let weighted: [[i64; P]; 3] = core::array::from_fn(|i| {
-            core::array::from_fn(|k| {
-                if k == 0 {
-                    i64::from(q[i])
-                } else {
-                    // (a - a_0) * q rounded; below 2^35 in magnitude for 16.16 attributes.
-                    let delta = values[i][k - 1] - base[k - 1];
-                    let product = match i32::try_from(delta) {
-                        Ok(delta) => mul_i32_u32(delta, q[i]),
-                        Err(_) => delta.wrapping_mul(i64::from(q[i])),
-                    };
-                    (product + (1 << (Q_BITS - 1))) >> Q_BITS
-                }
-            })
-        });
+        let mut weighted = [[0; P]; 3];
+        for i in 0..3 {
+            weighted[i][0] = i64::from(q[i]);
+            for k in 0..N {
+                // (a - a_0) * q rounded; below 2^35 in magnitude for 16.16 attributes.
+                let delta = values[i][k] - base[k];
+                let product = match i32::try_from(delta) {
+                    Ok(delta) => mul_i32_u32(delta, q[i]),
+                    Err(_) => delta.wrapping_mul(i64::from(q[i])),
+                };
+                weighted[i][k + 1] = (product + (1 << (Q_BITS - 1))) >> Q_BITS;
+            }
+        }
         let planes = triangle.planes_in(weighted, 0, window)?;
         let shift = sub_span.trailing_zeros();
-        let across = core::array::from_fn(|k| planes.dx[k] << shift);
-        Some(Self {
+        let mut this = Self {
             planes: TrackedPlanes::new(planes),
-            base: base.map(|b| b.wrapping_add(bias) as i32),
-            across,
+            base: [0; N],
+            across: [0; P],
             sub_span,
             shift,
-        })
+        };
+        for k in 0..P {
+            this.across[k] = this.planes.planes.dx[k] << shift;
+        }
+        for k in 0..N {
+            this.base[k] = base[k].wrapping_add(bias) as i32;
+        }
+        Some(this)
     }
 
     /// The sub-spans of the run of `len` pixels from `(x, y)`, walked by

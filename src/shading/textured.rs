@@ -308,13 +308,16 @@ where
     ) -> Option<V::Output> {
         // Perspective planes stay here, lent to the painter, which is moved around by value;
         // borrowed where they were returned (moving them out of the option is a copy).
-        let perspective_planes;
-        let (coordinates, perspective) = match self.perspective {
+        let perspective_planes = match self.perspective {
             Some(perspective) if !perspective.is_affine() => {
-                perspective_planes = new_perspective_planes(triangle, self, perspective, window);
-                (Planes::zero(), Some(perspective_planes.as_ref()?))
+                new_perspective_planes(triangle, self, perspective, window)
             }
-            _ => (coordinate_planes(triangle, self, window)?, None),
+            _ => None,
+        };
+        let (coordinates, perspective) = match &perspective_planes {
+            Some(planes) => (Planes::zero(), Some(planes)),
+            None if self.perspective.is_some_and(|p| !p.is_affine()) => return None,
+            None => (coordinate_planes(triangle, self, window)?, None),
         };
         let tint = match self.modulation {
             Some(colors) => Some(tint_planes(triangle, colors, window)?),
