@@ -467,3 +467,65 @@ fn extreme_input_is_safe() {
         }
     }
 }
+
+#[test]
+fn anti_aliased_and_translucent_perspective_textures_draw() {
+    use trirast::target::BlendTarget;
+    let texels = indexed_texels();
+    let texture = Texels::new(&texels, SIDE, SIDE).unwrap();
+    for seed in 0..200u64 {
+        let case = random_case(seed);
+        let style = TextureStyle::new(texture, case.uv)
+            .with_wrap(case.wrap)
+            .with_perspective(Perspective::new(case.w));
+        let triangle = Triangle {
+            vertices: case.vertices,
+        };
+        let (w, h) = (96u32, 64u32);
+        let mut plain_pixels = vec![Rgb888::BLACK; (w * h) as usize];
+        let mut plain = Framebuffer::new(&mut plain_pixels, w, h).unwrap();
+        triangle.into_styled(style).draw(&mut plain).unwrap();
+        // Opaque through the translucent target: the plain frame.
+        let mut pixels = vec![Rgb888::BLACK; (w * h) as usize];
+        let mut frame = Framebuffer::new(&mut pixels, w, h).unwrap();
+        triangle
+            .into_styled(style)
+            .draw(&mut frame.translucent(255))
+            .unwrap();
+        assert!(pixels == plain_pixels, "translucent, seed {seed}");
+        // Anti-aliased: anti-aliasing paints the interior apart from the edge pixels, so its
+        // runs, and the sub-spans counted from their first pixels, differ from the plain
+        // draw's (each within the bounds checked above). Pixels whose whole square is covered
+        // take texels of the triangle's coordinate range.
+        let mut smooth_pixels = vec![Rgb888::BLACK; (w * h) as usize];
+        let mut smooth = Framebuffer::new(&mut smooth_pixels, w, h).unwrap();
+        smooth.draw_anti_aliased(&triangle, &style).unwrap();
+        let inside = |x: i32, y: i32| {
+            [(-1, -1), (1, -1), (-1, 1), (1, 1), (0, 0)]
+                .iter()
+                .all(|&(dx, dy)| {
+                    let p = Point::new(x + dx, y + dy);
+                    reference_covers(case.vertices, p, Rule::Inclusive)
+                })
+        };
+        for y in 1..h as i32 - 1 {
+            for x in 1..w as i32 - 1 {
+                if inside(x, y) {
+                    let i = (y as u32 * w + x as u32) as usize;
+                    let texel = [smooth_pixels[i].r(), smooth_pixels[i].g()].map(|c| c / 4);
+                    for k in 0..2 {
+                        let range = case.uv.map(|c| c[k].to_num::<f64>());
+                        let low = range.iter().copied().fold(f64::MAX, f64::min).floor() - 1.0;
+                        let high = range.iter().copied().fold(f64::MIN, f64::max).ceil() + 1.0;
+                        let (low, high) = (low.max(0.0), high.min(f64::from(SIDE - 1)));
+                        let t = f64::from(texel[k]);
+                        assert!(
+                            case.wrap == Wrap::Repeat || (low..=high).contains(&t),
+                            "({x}, {y}) seed {seed}: texel {t} outside {low}..={high}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

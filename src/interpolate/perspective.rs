@@ -80,6 +80,10 @@ impl SubSpan {
 /// - Equal `w` at the three vertices (a face parallel to the screen) draws exactly what the
 ///   affine interpolation draws.
 ///
+/// Sub-spans are counted from the first pixel of each run painted: where a depth test or
+/// anti-aliasing splits a row into several runs, each is divided on its own, so a pixel's
+/// value can differ between such drawings by what the sub-span approximation allows.
+///
 /// `w` must be positive; values that are not count as the smallest positive `I16F16`. Only the
 /// ratios between the three matter. Texture modulation colours stay affine on screen.
 ///
