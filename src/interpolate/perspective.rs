@@ -258,17 +258,22 @@ fn normalise(q: u32) -> (u32, u32) {
 /// positive `I16F16`.
 #[inline(always)]
 fn normalised(w: [I16F16; 3]) -> [u32; 3] {
-    let w = w.map(|w| w.to_bits().max(1) as u32);
-    let nearest = w[0].min(w[1]).min(w[2]);
-    w.map(|w| {
-        if w == nearest {
-            return 1 << Q_BITS;
+    let mut q = [0; 3];
+    for i in 0..3 {
+        q[i] = w[i].to_bits().max(1) as u32;
+    }
+    let nearest = q[0].min(q[1]).min(q[2]);
+    for q in &mut q {
+        if *q == nearest {
+            *q = 1 << Q_BITS;
+        } else {
+            // nearest * 2^30 / w, through 2^63 / (w * 2^zeros).
+            let (normal, zeros) = normalise(*q);
+            let scaled = mul_u32(nearest, reciprocal(normal));
+            *q = ((scaled >> (33 - zeros)) as u32).max(1);
         }
-        // nearest * 2^30 / w, through 2^63 / (w * 2^zeros).
-        let (normal, zeros) = normalise(w);
-        let scaled = mul_u32(nearest, reciprocal(normal));
-        ((scaled >> (33 - zeros)) as u32).max(1)
-    })
+    }
+    q
 }
 
 /// Planes of `q`, `(a - a_0) q` for each of `N` attributes, and what turns them back into the
