@@ -12,12 +12,14 @@ use embedded_graphics::{
     prelude::*,
     primitives::Rectangle,
 };
-use fixed::types::I16F16;
+use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
     band::{Bands, Scene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
+    geometry::{SubPixelTriangle, SubPoint},
     shading::Fragment,
+    target::BlendTarget,
     texture::{Filter, Perspective, SubSpan, Texels, Wrap},
     Framebuffer, ShaderStyle, TextureStyle, Triangle,
 };
@@ -460,6 +462,25 @@ fn extreme_input_is_safe() {
                                 let covered = reference_covers(v, p, Rule::TopLeft);
                                 assert_eq!(target.writes_at(p), u32::from(covered), "{p:?}");
                             }
+                            // The same corners in 1/256 pixel, moved by a fraction (and
+                            // saturated), and through a depth test and anti-aliasing.
+                            let sub = v.map(|p| {
+                                let at = |t: i32| {
+                                    I24F8::from_bits(t.saturating_mul(256).saturating_add(77))
+                                };
+                                SubPoint::new(at(p.x), at(p.y))
+                            });
+                            let shape = SubPixelTriangle { vertices: sub };
+                            let mut target = Recorder::<Rgb888>::new(window);
+                            shape.into_styled(style).draw(&mut target).unwrap();
+                            assert_eq!(target.outside_writes, 0);
+                            let mut pixels = [Rgb888::BLACK; 40 * 30];
+                            let mut depths = [u16::MAX; 40 * 30];
+                            let mut frame = Framebuffer::new(&mut pixels, 40, 30).unwrap();
+                            frame.draw_anti_aliased(&shape, &style).unwrap();
+                            let mut zbuffer = DepthBuffer::new(&mut depths, 40, 30).unwrap();
+                            let mut scene = DepthTarget::new(&mut frame, &mut zbuffer).unwrap();
+                            scene.draw(&shape, [0, 30_000, u16::MAX], &style).unwrap();
                         }
                     }
                 }
@@ -470,7 +491,6 @@ fn extreme_input_is_safe() {
 
 #[test]
 fn anti_aliased_and_translucent_perspective_textures_draw() {
-    use trirast::target::BlendTarget;
     let texels = indexed_texels();
     let texture = Texels::new(&texels, SIDE, SIDE).unwrap();
     for seed in 0..200u64 {
