@@ -161,6 +161,26 @@ impl<const N: usize, F> ShaderStyle<N, F> {
     }
 }
 
+impl<const N: usize, F> ShaderStyle<N, F> {
+    /// The attributes as raw 16.16, for the planes.
+    #[inline(always)]
+    fn raw_attributes(&self) -> [[i64; N]; 3] {
+        self.attributes.map(|a| a.map(|v| i64::from(v.to_bits())))
+    }
+}
+
+/// `shader`'s colour for the pixel at `position` with raw 16.16 values `raw`.
+#[inline(always)]
+fn fragment_shade<C, const N: usize, F>(shader: &F, position: Point, raw: [u32; N]) -> C
+where
+    F: Fn(Fragment<N>) -> C,
+{
+    shader(Fragment {
+        position,
+        values: raw.map(|v| I16F16::from_bits(v as i32)),
+    })
+}
+
 /// A [`ShaderStyle`] whose attributes are interpolated perspective-correct: made by
 /// [`ShaderStyle::with_perspective`], drawn for 1 to 8 attributes.
 ///
@@ -209,12 +229,7 @@ where
             let shader = SteppedShader {
                 start: stretch.start,
                 steps: stretch.steps,
-                shade: |position, raw: [u32; N]| {
-                    (self.shader)(Fragment {
-                        position,
-                        values: raw.map(|v| I16F16::from_bits(v as i32)),
-                    })
-                },
+                shade: |position, raw| fragment_shade(self.shader, position, raw),
             };
             let piece = Span {
                 x: stretch.x,
@@ -253,7 +268,7 @@ macro_rules! perspective_shader_style {
                 if self.perspective.is_affine() {
                     return self.style.paint(triangle, window, visitor);
                 }
-                let values = self.style.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
+                let values = self.style.raw_attributes();
                 let (w, sub_span) = (self.perspective.w, self.perspective.sub_span.pixels());
                 let planes =
                     PerspectivePlanes::<$p, $n>::new(triangle, values, 0, w, sub_span, window);
@@ -290,14 +305,8 @@ where
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
-        let values = self.attributes.map(|a| a.map(|v| i64::from(v.to_bits())));
-        let shade = |position, raw: [u32; N]| {
-            (self.shader)(Fragment {
-                position,
-                values: raw.map(|v| I16F16::from_bits(v as i32)),
-            })
-        };
-        let shader = PlanesShader::new(triangle, values, 0, window.top_left, shade)?;
+        let shade = |position, raw| fragment_shade(&self.shader, position, raw);
+        let shader = PlanesShader::new(triangle, self.raw_attributes(), 0, window.top_left, shade)?;
         Some(visitor.visit(ShaderPainter(shader)))
     }
 }

@@ -111,14 +111,27 @@ where
     }
 
     #[inline(always)]
-    fn next(&self, (position, values, step): &mut Self::State) -> C {
-        let color = (self.shade)(*position, *values);
-        position.x = position.x.wrapping_add(1);
-        for k in 0..N {
-            values[k] = values[k].wrapping_add(step[k]);
-        }
-        color
+    fn next(&self, state: &mut Self::State) -> C {
+        next_linear(&self.shade, state)
     }
+}
+
+/// The colour `shade` gives the current pixel of a linear state (position, values, their
+/// steps); then the state one pixel right.
+#[inline(always)]
+fn next_linear<C, const N: usize, F>(
+    shade: &F,
+    (position, values, step): &mut (Point, [u32; N], [u32; N]),
+) -> C
+where
+    F: Fn(Point, [u32; N]) -> C,
+{
+    let color = shade(*position, *values);
+    position.x = position.x.wrapping_add(1);
+    for k in 0..N {
+        values[k] = values[k].wrapping_add(step[k]);
+    }
+    color
 }
 
 /// A shader of `N` values stepping linearly from `start` by `steps` (raw 16.16) from the first
@@ -145,12 +158,7 @@ where
     }
 
     #[inline(always)]
-    fn next(&self, (position, values, step): &mut Self::State) -> C {
-        let color = (self.shade)(*position, *values);
-        position.x = position.x.wrapping_add(1);
-        for k in 0..N {
-            values[k] = values[k].wrapping_add(step[k]);
-        }
-        color
+    fn next(&self, state: &mut Self::State) -> C {
+        next_linear(&self.shade, state)
     }
 }

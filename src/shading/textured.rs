@@ -612,40 +612,43 @@ where
         // Affine steps were addressed with the triangle; perspective ones change per
         // sub-span.
         let affine = self.perspective.is_none();
-        let (s, t) = (start, tint);
-        match (self.addressing, self.bilinear) {
-            (Addressing::Clamp(u, v), false) => {
+        match self.addressing {
+            Addressing::Clamp(u, v) => {
                 let steps = (steps[0], steps[1]);
-                self.shade::<_, _, NO, EITHER>((u, v), steps, s, t, run, offset, target)
+                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
             }
-            (Addressing::Clamp(u, v), true) => {
-                let steps = (steps[0], steps[1]);
-                self.shade::<_, _, YES, EITHER>((u, v), steps, s, t, run, offset, target)
+            Addressing::Pow2(u, v, du, dv) => {
+                let steps = addressed_steps(affine, (u, v), (du, dv), steps);
+                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
             }
-            (Addressing::Pow2(u, v, du, dv), bilinear) => {
-                let steps = if affine {
-                    (du, dv)
-                } else {
-                    (u.step(steps[0]), v.step(steps[1]))
-                };
-                if bilinear {
-                    self.shade::<_, _, YES, EITHER>((u, v), steps, s, t, run, offset, target)
-                } else {
-                    self.shade::<_, _, NO, EITHER>((u, v), steps, s, t, run, offset, target)
-                }
+            Addressing::Repeat(u, v, du, dv) => {
+                let steps = addressed_steps(affine, (u, v), (du, dv), steps);
+                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
             }
-            (Addressing::Repeat(u, v, du, dv), bilinear) => {
-                let steps = if affine {
-                    (du, dv)
-                } else {
-                    (u.step(steps[0]), v.step(steps[1]))
-                };
-                if bilinear {
-                    self.shade::<_, _, YES, EITHER>((u, v), steps, s, t, run, offset, target)
-                } else {
-                    self.shade::<_, _, NO, EITHER>((u, v), steps, s, t, run, offset, target)
-                }
-            }
+        }
+    }
+
+    /// Shades an addressed run with this filter's loop, which reads the modulation per pixel.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn shade_filtered<A, D>(
+        &self,
+        axes: (A, A),
+        steps: (A::Coord, A::Coord),
+        start: [i64; 2],
+        tint: Option<[u32; M]>,
+        run: Span,
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        A: Axis,
+        D: DrawTarget<Color = T::Color>,
+    {
+        if self.bilinear {
+            self.shade::<_, _, YES, EITHER>(axes, steps, start, tint, run, offset, target)
+        } else {
+            self.shade::<_, _, NO, EITHER>(axes, steps, start, tint, run, offset, target)
         }
     }
 
@@ -721,6 +724,22 @@ fn across(steps: u32, gradient: i64) -> Option<i64> {
         Some(if gradient < 0 { -product } else { product })
     } else {
         i64::from(steps).checked_mul(gradient)
+    }
+}
+
+/// The per-pixel steps of a run in `axes`' terms: the ones addressed with the triangle when
+/// the mapping is affine, else `gradient` (2^-46 texels per pixel) addressed now.
+#[inline(always)]
+fn addressed_steps<A: Axis>(
+    affine: bool,
+    (u, v): (A, A),
+    triangle_steps: (A::Coord, A::Coord),
+    gradient: [i64; 2],
+) -> (A::Coord, A::Coord) {
+    if affine {
+        triangle_steps
+    } else {
+        (u.step(gradient[0]), v.step(gradient[1]))
     }
 }
 
