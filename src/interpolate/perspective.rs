@@ -76,7 +76,7 @@ impl SubSpan {
 ///   coordinates) of the exact rational perspective ones, for `w` ratios up to 1:256 within a
 ///   triangle and attributes changing by less than 4096 across it.
 /// - Between, they follow the straight line between the two ends (see [`SubSpan`]), stepped
-///   in 2^-16 (each pixel adds at most 2^-16 of rounding).
+///   in 2^-16 (each pixel adds less than 1.5 x 2^-16 of rounding).
 /// - Equal `w` at the three vertices (a face parallel to the screen) draws exactly what the
 ///   affine interpolation draws.
 ///
