@@ -29,8 +29,13 @@ const SIDE: u32 = 64;
 
 /// A `SIDE` x `SIDE` texture whose texel `(i, j)` is `(4i, 4j, 0)`.
 fn indexed_texels() -> Vec<Rgb888> {
-    (0..SIDE * SIDE)
-        .map(|n| Rgb888::new(((n % SIDE) * 4) as u8, ((n / SIDE) * 4) as u8, 0))
+    indexed_texels_of(SIDE)
+}
+
+/// A `side` x `side` texture (`side` at most 64) whose texel `(i, j)` is `(4i, 4j, 0)`.
+fn indexed_texels_of(side: u32) -> Vec<Rgb888> {
+    (0..side * side)
+        .map(|n| Rgb888::new(((n % side) * 4) as u8, ((n / side) * 4) as u8, 0))
         .collect()
 }
 
@@ -68,6 +73,8 @@ struct Case {
     sub_span: SubSpan,
     wrap: Wrap,
     window: Rectangle,
+    /// The texture's side: a power of two (repeated by masking) or not (by division).
+    side: u32,
 }
 
 fn random_case(seed: u64) -> Case {
@@ -105,15 +112,16 @@ fn random_case(seed: u64) -> Case {
             Wrap::Repeat
         },
         window,
+        side: [SIDE, SIDE, 37, 48][rng.range(0, 3) as usize],
     }
 }
 
 /// The texel index along a side for coordinate `t`, nearest (half up) and addressed.
-fn texel(t: f64, wrap: Wrap) -> i64 {
+fn texel(t: f64, wrap: Wrap, side: u32) -> i64 {
     let index = (t + 0.5).floor() as i64;
     match wrap {
-        Wrap::Repeat => index.rem_euclid(i64::from(SIDE)),
-        Wrap::Clamp => index.clamp(0, i64::from(SIDE) - 1),
+        Wrap::Repeat => index.rem_euclid(i64::from(side)),
+        Wrap::Clamp => index.clamp(0, i64::from(side) - 1),
     }
 }
 
@@ -122,8 +130,8 @@ fn texel(t: f64, wrap: Wrap) -> i64 {
 /// coordinates at the ends of its sub-span: within 1/256 texel at the ends, plus the per-pixel
 /// step's rounding (under 1.5 x 2^-16 texel a pixel) between.
 fn check_case(case: &Case) -> Result<(), TestCaseError> {
-    let texels = indexed_texels();
-    let texture = Texels::new(&texels, SIDE, SIDE).unwrap();
+    let texels = indexed_texels_of(case.side);
+    let texture = Texels::new(&texels, case.side, case.side).unwrap();
     let style = TextureStyle::new(texture, case.uv)
         .with_wrap(case.wrap)
         .with_perspective(Perspective::new(case.w).with_sub_span(case.sub_span));
@@ -170,8 +178,8 @@ fn check_case(case: &Case) -> Result<(), TestCaseError> {
             for k in 0..2 {
                 let line = a[k] + (b[k] - a[k]) * t;
                 let candidates = [
-                    texel(line - slack, case.wrap),
-                    texel(line + slack, case.wrap),
+                    texel(line - slack, case.wrap, case.side),
+                    texel(line + slack, case.wrap, case.side),
                 ];
                 prop_assert!(
                     candidates.contains(&got[k]),
