@@ -4,6 +4,8 @@
 //! documented mapping), within the documented bounds; equal `w` draws exactly the affine
 //! mapping; depth, bands and modulation work; bad input neither panics nor strays.
 
+#![allow(clippy::needless_range_loop)] // the two coordinates, side by side, read best indexed
+
 mod common;
 
 use common::{reference_covers, window_points, Recorder, Rng, Rule};
@@ -116,6 +118,27 @@ fn random_case(seed: u64) -> Case {
     }
 }
 
+/// The documented mapping at pixel `x` of row `y`, whose run is `first..=last`: the straight
+/// line between the exact perspective coordinates at the ends of the pixel's sub-span (which
+/// starts a multiple of the length after the run's first pixel and ends at the next such pixel
+/// or the run's last), with the slack allowed (1/256 at the ends, plus under 1.5 x 2^-16 a
+/// pixel of step rounding), and the sub-span's ends.
+fn documented(case: &Case, y: i32, (first, last): (i32, i32), x: i32) -> ([f64; 2], f64, [i32; 2]) {
+    let sub_span = case.sub_span.pixels() as i32;
+    let start = first + (x - first) / sub_span * sub_span;
+    let end = (start + sub_span).min(last);
+    let exact = |x: i32| exact_uv(case.vertices, case.uv, case.w, Point::new(x, y)).unwrap();
+    let (a, b) = (exact(start), exact(end));
+    let t = if end == start {
+        0.0
+    } else {
+        f64::from(x - start) / f64::from(end - start)
+    };
+    let slack = 1.0 / 256.0 + 1.5 * f64::from(x - start) / 65536.0 + 1e-9;
+    let line = [0, 1].map(|k| a[k] + (b[k] - a[k]) * t);
+    (line, slack, [start, end])
+}
+
 /// The texel index along a side for coordinate `t`, nearest (half up) and addressed.
 fn texel(t: f64, wrap: Wrap, side: u32) -> i64 {
     let index = (t + 0.5).floor() as i64;
@@ -150,7 +173,6 @@ fn check_case(case: &Case) -> Result<(), TestCaseError> {
             p
         );
     }
-    let sub_span = case.sub_span.pixels() as i32;
     let (left, width) = (case.window.top_left.x, case.window.size.width as i32);
     for y in case.window.rows() {
         // The row's run: its covered pixels, which are contiguous.
@@ -160,26 +182,14 @@ fn check_case(case: &Case) -> Result<(), TestCaseError> {
         let (Some(&first), Some(&last)) = (covered.first(), covered.last()) else {
             continue;
         };
-        let exact = |x: i32| exact_uv(case.vertices, case.uv, case.w, Point::new(x, y)).unwrap();
         for x in first..=last {
-            // The sub-span holding x: from a multiple of the length after the run's start,
-            // to the next such pixel or the run's last.
-            let start = first + (x - first) / sub_span * sub_span;
-            let end = (start + sub_span).min(last);
-            let (a, b) = (exact(start), exact(end));
-            let t = if end == start {
-                0.0
-            } else {
-                f64::from(x - start) / f64::from(end - start)
-            };
-            let slack = 1.0 / 256.0 + 1.5 * f64::from(x - start) / 65536.0 + 1e-9;
+            let (line, slack, [start, end]) = documented(case, y, (first, last), x);
             let color = target.get(Point::new(x, y)).unwrap();
             let got = [i64::from(color.r() / 4), i64::from(color.g() / 4)];
             for k in 0..2 {
-                let line = a[k] + (b[k] - a[k]) * t;
                 let candidates = [
-                    texel(line - slack, case.wrap, case.side),
-                    texel(line + slack, case.wrap, case.side),
+                    texel(line[k] - slack, case.wrap, case.side),
+                    texel(line[k] + slack, case.wrap, case.side),
                 ];
                 prop_assert!(
                     candidates.contains(&got[k]),
@@ -188,7 +198,7 @@ fn check_case(case: &Case) -> Result<(), TestCaseError> {
                     y,
                     k,
                     got[k],
-                    line,
+                    line[k],
                     start,
                     end,
                     case
@@ -228,7 +238,6 @@ fn check_shader_case(case: &Case) -> Result<(), TestCaseError> {
         fragments.into_inner()
     };
     let fragments = record(Some(case.w));
-    let sub_span = case.sub_span.pixels() as i32;
     // Each row's run from its fragments (one run per row, left to right).
     let mut rows = std::collections::BTreeMap::<i32, (i32, i32)>::new();
     for f in &fragments {
@@ -241,28 +250,17 @@ fn check_shader_case(case: &Case) -> Result<(), TestCaseError> {
     for f in &fragments {
         let (x, y) = (f.position.x, f.position.y);
         prop_assert!(reference_covers(case.vertices, f.position, Rule::TopLeft));
-        let (first, last) = rows[&y];
-        let start = first + (x - first) / sub_span * sub_span;
-        let end = (start + sub_span).min(last);
-        let exact = |x: i32| exact_uv(case.vertices, case.uv, case.w, Point::new(x, y)).unwrap();
-        let (a, b) = (exact(start), exact(end));
-        let t = if end == start {
-            0.0
-        } else {
-            f64::from(x - start) / f64::from(end - start)
-        };
-        let slack = 1.0 / 256.0 + 1.5 * f64::from(x - start) / 65536.0 + 1e-9;
+        let (line, slack, _) = documented(case, y, rows[&y], x);
         for k in 0..2 {
-            let line = a[k] + (b[k] - a[k]) * t;
             let got = f.values[k].to_num::<f64>();
             prop_assert!(
-                (got - line).abs() <= slack,
+                (got - line[k]).abs() <= slack,
                 "({}, {}) {}: {} vs {}",
                 x,
                 y,
                 k,
                 got,
-                line
+                line[k]
             );
         }
     }

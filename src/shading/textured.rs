@@ -308,16 +308,14 @@ where
     ) -> Option<V::Output> {
         // Perspective planes stay here, lent to the painter, which is moved around by value;
         // borrowed where they were returned (moving them out of the option is a copy).
-        let perspective_planes = match self.perspective {
-            Some(perspective) if !perspective.is_affine() => {
-                new_perspective_planes(triangle, self, perspective, window)
-            }
-            _ => None,
-        };
-        let (coordinates, perspective) = match &perspective_planes {
-            Some(planes) => (Planes::zero(), Some(planes)),
-            None if self.perspective.is_some_and(|p| !p.is_affine()) => return None,
-            None => (coordinate_planes(triangle, self, window)?, None),
+        let corrected = self.perspective.filter(|p| !p.is_affine());
+        let perspective_planes =
+            corrected.and_then(|p| new_perspective_planes(triangle, self, p, window));
+        let (coordinates, perspective) = match (&perspective_planes, corrected) {
+            (Some(planes), _) => (Planes::zero(), Some(planes)),
+            // Degenerate.
+            (None, Some(_)) => return None,
+            (None, None) => (coordinate_planes(triangle, self, window)?, None),
         };
         let tint = match self.modulation {
             Some(colors) => Some(tint_planes(triangle, colors, window)?),
