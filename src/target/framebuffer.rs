@@ -438,18 +438,21 @@ fn fill_long_run<S: Copy>(run: &mut [S], value: S) {
         return;
     }
     let block = [value; 16];
-    // 32 elements a step and the ragged end as one more, overlapping, 32: runs up to 64
-    // need no loop iteration.
-    run[..16].copy_from_slice(&block);
-    run[16..32].copy_from_slice(&block);
-    let mut start = 32;
-    while start + 32 < n {
-        run[start..start + 16].copy_from_slice(&block);
-        run[start + 16..start + 32].copy_from_slice(&block);
-        start += 32;
+    // 32 elements a step from the end backwards, the last step (at the start) overlapping
+    // the one before: runs up to 64 take two steps, and one loop serves all of them, which
+    // keeps the function small. `get_mut` rather than indexing: the compiler cannot prove
+    // `start + 32` in bounds, and a panic would bring its formatting into the flash (about
+    // 900 bytes).
+    let mut start = n - 32;
+    while let Some(chunk) = run.get_mut(start..start + 32) {
+        let (first, second) = chunk.split_at_mut(16);
+        first.copy_from_slice(&block);
+        second.copy_from_slice(&block);
+        if start == 0 {
+            break;
+        }
+        start = start.saturating_sub(32);
     }
-    run[n - 32..n - 16].copy_from_slice(&block);
-    run[n - 16..].copy_from_slice(&block);
 }
 
 /// Drops `count` items; stops early if the iterator ends.
