@@ -567,7 +567,8 @@ fn div_round(numerator: i128, denominator: i128) -> i128 {
     } else {
         (numerator, denominator)
     };
-    (2 * n + d).div_euclid(2 * d)
+    // `d` is never zero (areas are checked first); `checked_` proves it without a panic.
+    (2 * n + d).checked_div_euclid(2 * d).unwrap_or(0)
 }
 
 #[cfg(test)]

@@ -208,14 +208,27 @@ where
                     }
                 }
             }
-            _ => self.fill_contiguous_clipped(area, &mut colors),
+            _ => self.fill_contiguous_clipped(area, &mut Pull(&mut colors)),
         }
+    }
+
+    /// `fill_contiguous` for one row partly outside the image (never a rasterizer span: those
+    /// are clipped to the target). Out of line and taking `colors` by value, as
+    /// [`Self::fill_contiguous_rows`]: a small per-shader shim into the type-erased
+    /// [`Self::fill_contiguous_clipped`].
+    #[inline(never)]
+    fn fill_contiguous_row_clipped<I: Iterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        mut colors: I,
+    ) {
+        self.fill_contiguous_clipped(area, &mut Pull(&mut colors));
     }
 
     /// `fill_contiguous` for areas of several rows or partly outside. Type-erased: the
     /// rasterizer's spans never come here, so one copy per colour type serves every shader.
     #[inline(never)]
-    fn fill_contiguous_clipped(&mut self, area: &Rectangle, colors: &mut dyn Iterator<Item = C>) {
+    fn fill_contiguous_clipped(&mut self, area: &Rectangle, colors: &mut Pull<'_, C>) {
         self.zip_area(area, colors, |dst, color| *dst = S::store(color));
     }
 
@@ -241,7 +254,12 @@ where
         skip(colors, above * u64::from(area.size.width));
         for y in window.y0..window.y1 {
             skip(colors, left);
-            let row = &mut self.pixels[y * width + window.x0..y * width + window.x1];
+            let Some(row) = self
+                .pixels
+                .get_mut(y * width + window.x0..y * width + window.x1)
+            else {
+                break;
+            };
             let mut written = 0;
             for (dst, color) in row.iter_mut().zip(&mut *colors) {
                 write(dst, color);
@@ -359,10 +377,14 @@ where
                 for (dst, color) in run.iter_mut().zip(colors) {
                     *dst = S::store(color);
                 }
-                return Ok(());
+            } else {
+                self.fill_contiguous_row_clipped(area, colors.into_iter());
             }
+        } else {
+            // Several rows: the rasterizer's spans, whose height is the constant 1, never
+            // instantiate this.
+            self.fill_contiguous_rows(area, colors.into_iter());
         }
-        self.fill_contiguous_rows(area, colors.into_iter());
         Ok(())
     }
 
@@ -452,6 +474,33 @@ fn fill_long_run<S: Copy>(run: &mut [S], value: S) {
             break;
         }
         start = start.saturating_sub(32);
+    }
+}
+
+/// An iterator's `next`, alone: its trait object's table holds nothing else, where
+/// `dyn Iterator`'s would bring each iterator type's `nth` and the rest into the flash (and
+/// `dyn FnMut` a second copy of the call).
+trait Next<T> {
+    fn next_item(&mut self) -> Option<T>;
+}
+
+impl<I: Iterator> Next<I::Item> for I {
+    #[inline]
+    fn next_item(&mut self) -> Option<I::Item> {
+        self.next()
+    }
+}
+
+/// The items of a type-erased [`Next`]: an iterator whose methods are instantiated once per
+/// item type.
+struct Pull<'a, T>(&'a mut dyn Next<T>);
+
+impl<T> Iterator for Pull<'_, T> {
+    type Item = T;
+
+    #[inline]
+    fn next(&mut self) -> Option<T> {
+        self.0.next_item()
     }
 }
 
@@ -593,6 +642,32 @@ mod tests {
         fb.fill_contiguous(&area, (1..=9).map(gray)).unwrap();
         let v: [u8; 12] = px.map(|c| c.luma());
         assert_eq!(v, [5, 6, 0, 0, 8, 9, 0, 0, 0, 0, 0, 0]);
+    }
+
+    #[test]
+    fn fill_contiguous_clips_single_rows() {
+        // One row at a time, hanging off either side, off both, or outside: each pixel inside
+        // gets the colour of its position in the row, as drawing pixel by pixel would give.
+        for (x, y, w) in [
+            (-2, 1, 4),
+            (2, 0, 5),
+            (-1, 2, 7),
+            (0, 3, 2),
+            (-9, 1, 3),
+            (5, 0, 2),
+        ] {
+            let mut px = [gray(0); 5 * 3];
+            let mut fb = Framebuffer::new(&mut px, 5, 3).unwrap();
+            let area = Rectangle::new(Point::new(x, y), Size::new(w, 1));
+            fb.fill_contiguous(&area, (1..=w as u8).map(gray)).unwrap();
+            let mut want = [0u8; 5 * 3];
+            for i in 0..w as i32 {
+                if (0..5).contains(&(x + i)) && (0..3).contains(&y) {
+                    want[(y * 5 + x + i) as usize] = i as u8 + 1;
+                }
+            }
+            assert_eq!(px.map(|c| c.luma()), want, "row at ({x}, {y}), {w} long");
+        }
     }
 
     #[test]
