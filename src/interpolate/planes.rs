@@ -4,6 +4,8 @@ use core::cell::Cell;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
+use crate::setup::lane::div_rem_u64;
+
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
 
@@ -132,7 +134,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         if area == 0 {
             return None;
         }
-        let reciprocal = reciprocal_2_62(area.unsigned_abs());
+        let reciprocal = reciprocal_2_62_subpixel(area.unsigned_abs());
         // As in `new_small`, and 8 bits less of shift: 256 units to a pixel.
         let shift = 62 - (SETUP - STEP_BITS) - 8;
         let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
@@ -286,14 +288,32 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 }
 
 /// `floor(2^62 / divisor)`, for `0 < divisor < 2^31` (a doubled area under 2^15-pixel
-/// deltas). On Arm cores with a hardware 32-bit divide (Cortex-M3 and up, which
-/// `target_has_atomic` tells from Cortex-M0), divisors below 2^16 (triangles under 32,768
-/// pixels, the common case) take [`reciprocal_by_digits`]: four hardware divides instead of the
-/// 64-bit library division (measured: 3 to 4% fewer instructions per small interpolated
-/// triangle on Cortex-M4F). On Cortex-M0 each 32-bit divide is a library call too and the two
-/// measure the same; x86-64 divides 64 bits in hardware.
-#[inline(always)]
+/// deltas). On Arm, divisors below 2^16 (triangles under 32,768 pixels, the common case) take
+/// [`reciprocal_by_digits`]: four 32-bit divides, in hardware from Cortex-M3 up (measured: 3
+/// to 4% fewer instructions per small interpolated triangle on Cortex-M4F than the 64-bit
+/// library division), library calls on Cortex-M0 (where the two measure the same). Larger
+/// ones shift and subtract ([`div_rem_u64`], some 800 instructions on Cortex-M0, under 1% of
+/// drawing such a triangle), so that the ~1 KB 64-bit division routine stays out of the
+/// flash. x86-64 divides 64 bits in hardware. Out of line on Arm: one copy serves every
+/// plane setup.
+#[cfg_attr(target_arch = "arm", inline(never))]
+#[cfg_attr(not(target_arch = "arm"), inline(always))]
 fn reciprocal_2_62(divisor: u64) -> u64 {
+    if cfg!(target_arch = "arm") {
+        match u32::try_from(divisor) {
+            Ok(d @ 1..=0xFFFF) => reciprocal_by_digits(d),
+            _ => div_rem_u64(1 << 62, divisor).0,
+        }
+    } else {
+        (1u64 << 62) / divisor.max(1)
+    }
+}
+
+/// [`reciprocal_2_62`] for sub-pixel triangles, whose doubled areas in 1/65,536 pixel units
+/// are mostly 2^16 or more: the 64-bit library division, but for divisors below 2^16 on cores
+/// with a hardware divide (Cortex-M3 and up, which `target_has_atomic` tells from Cortex-M0).
+#[inline(always)]
+fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
     match u32::try_from(divisor) {
         Ok(d @ 1..=0xFFFF) if cfg!(all(target_arch = "arm", target_has_atomic = "32")) => {
             reciprocal_by_digits(d)
@@ -302,18 +322,18 @@ fn reciprocal_2_62(divisor: u64) -> u64 {
     }
 }
 
-/// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 (0x4000 followed by three
-/// zero digits, base 2^16): each partial remainder is below `d`, so each step's dividend fits
-/// 32 bits and its quotient digit 16.
+/// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 = 2^30 * 2^32: 2^30 in one
+/// 32-bit divide, then two zero digits of base 2^16. Each partial remainder is below `d`, so
+/// each later dividend fits 32 bits and its quotient digit 16: three divides in all.
 #[inline(always)]
 fn reciprocal_by_digits(d: u32) -> u64 {
-    let mut quotient = 0u64;
-    let mut remainder = 0u32;
-    for digit in [0x4000, 0, 0, 0] {
-        let dividend = (remainder << 16) | digit;
-        let (q, r) = (dividend / d, dividend % d);
-        quotient = (quotient << 16) | u64::from(q);
-        remainder = r;
+    let top = 1u32 << 30;
+    let mut quotient = u64::from(top / d);
+    let mut remainder = top % d;
+    for _ in 0..2 {
+        let dividend = remainder << 16;
+        quotient = (quotient << 16) | u64::from(dividend / d);
+        remainder = dividend % d;
     }
     quotient
 }
@@ -770,6 +790,9 @@ mod tests {
     fn reciprocals_are_the_64_bit_division() {
         let check = |d: u64| {
             assert_eq!(reciprocal_2_62(d), (1u64 << 62) / d, "{d}");
+            assert_eq!(reciprocal_2_62_subpixel(d), (1u64 << 62) / d, "{d}");
+            // The shift and subtract Arm takes for divisors of 2^16 and more.
+            assert_eq!(div_rem_u64(1 << 62, d).0, (1u64 << 62) / d, "{d}");
             if let Ok(small @ 1..=0xFFFF) = u32::try_from(d) {
                 assert_eq!(reciprocal_by_digits(small), (1u64 << 62) / d, "{d}");
             }
