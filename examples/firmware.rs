@@ -28,10 +28,10 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use heapless::Vec;
-use modes::{Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
+use modes::{DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
 use panic_halt as _;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
-use trirast::{band::Scene as BandScene, texture::Texels, Framebuffer};
+use trirast::{texture::Texels, Framebuffer};
 
 #[entry]
 fn main() -> ! {
@@ -49,7 +49,7 @@ fn main() -> ! {
         *t = modes::texel(i as u32, TEXTURE_SIDE);
     }
     let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut list: BandScene<'static, Rgb565, MAX_TRIANGLES> = BandScene::new(screen);
+    let mut list: DisplayList<MAX_TRIANGLES> = DisplayList::new(screen);
     let mut work = Workspace {
         texture: Texels::new(&texels, TEXTURE_SIDE, TEXTURE_SIDE).unwrap(),
         depths: &mut depths,

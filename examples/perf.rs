@@ -38,9 +38,10 @@ use embedded_graphics::{
     primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
 };
 use fixed::types::I16F16;
+use modes::DisplayList;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
-    band::{Bands, Scene as BandScene, SceneStyle},
+    band::{Bands, SceneStyle},
     coverage::{for_each_span, Span},
     depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Perspective, Texels, Wrap},
@@ -138,7 +139,7 @@ where
                 let width = WIDTH as usize * BAND_ROWS as usize;
                 let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
                 (
-                    Box::new(BandScene::new(screen)),
+                    Box::new(DisplayList::new(screen)),
                     vec![Rgb565::BLACK; width],
                     vec![0u16; width],
                 )
@@ -238,11 +239,7 @@ const BAND_ROWS: u32 = 16;
 const BAND_CAPACITY: usize = 5000;
 
 /// What the `band` mode's frames share: the scene, the band and the depth band.
-type BandMemory = (
-    Box<BandScene<'static, Rgb565, BAND_CAPACITY>>,
-    Vec<Rgb565>,
-    Vec<u16>,
-);
+type BandMemory = (Box<DisplayList<BAND_CAPACITY>>, Vec<Rgb565>, Vec<u16>);
 
 thread_local! {
     static BAND_MEMORY: std::cell::RefCell<Option<BandMemory>> = const { std::cell::RefCell::new(None) };
@@ -252,7 +249,7 @@ thread_local! {
 #[inline(never)]
 fn band_frame<D>(
     scene: &[SceneTriangle],
-    list: &mut BandScene<'static, Rgb565, BAND_CAPACITY>,
+    list: &mut DisplayList<BAND_CAPACITY>,
     bands: &mut Bands<'_, Rgb565>,
     target: &mut D,
 ) where

@@ -122,6 +122,11 @@ pub struct SceneTriangle<C: PixelColor, T: TexelSource<Color = C>, G = Triangle>
 
 /// A display list of up to `N` triangles for [`Bands`] to render, drawn in the order pushed.
 ///
+/// `T` is the texture type of its textured triangles ([`Texels`] unless named). Rendering
+/// builds in texture mapping for it; a scene of flat and Gouraud triangles only can name
+/// [`NoTexture`](crate::texture::NoTexture) instead and leave all of that out of the flash
+/// (about 10 KB on Cortex-M0).
+///
 /// # Examples
 ///
 /// ```

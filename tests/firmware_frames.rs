@@ -8,9 +8,9 @@ mod modes;
 mod scenes;
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
-use modes::{Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
+use modes::{DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
 use scenes::{Scene, HEIGHT, WIDTH};
-use trirast::{band::Scene as BandScene, texture::Texels, Framebuffer};
+use trirast::{texture::Texels, Framebuffer};
 
 #[test]
 fn frames_match_the_firmware_checksums() {
@@ -22,7 +22,7 @@ fn frames_match_the_firmware_checksums() {
     let mut depth_band = vec![0u16; BAND_LEN];
     let screen =
         embedded_graphics::primitives::Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
-    let mut list: Box<BandScene<'static, Rgb565, MAX_TRIANGLES>> = Box::new(BandScene::new(screen));
+    let mut list: Box<DisplayList<MAX_TRIANGLES>> = Box::new(DisplayList::new(screen));
     let mut work = Workspace {
         texture: Texels::new(&texels, TEXTURE_SIDE, TEXTURE_SIDE).unwrap(),
         depths: &mut depths,

@@ -10,7 +10,7 @@ use trirast::{
     depth::{DepthBuffer, DepthTarget},
     geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
-    texture::{Filter, Perspective, Texels},
+    texture::{Filter, NoTexture, Perspective, Texels},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
@@ -240,8 +240,12 @@ pub struct Workspace<'a, const N: usize> {
     /// The depth band.
     pub depth_band: &'a mut [u16],
     /// The display list (for `Band`).
-    pub list: &'a mut BandScene<'static, Rgb565, N>,
+    pub list: &'a mut DisplayList<N>,
 }
+
+/// The band mode's display list: flat and Gouraud triangles only. `NoTexture` leaves texture
+/// mapping out of the band renderer (measured in `benches/firmware-size.sh`).
+pub type DisplayList<const N: usize> = BandScene<'static, Rgb565, N, NoTexture<Rgb565>>;
 
 /// Draws `triangles` in `mode` into `frame` (320 x 240). Each mode is a function of its own,
 /// out of line, so that what is measured is compiled as a caller of the library would compile

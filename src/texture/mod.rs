@@ -25,7 +25,9 @@ mod address;
 mod source;
 
 pub(crate) use address::{Axis, Clamped, Direct, Pow2Repeated, Repeated, COORDINATE_BITS};
-pub use source::{ImageTexels, RawTexels, TexelByteOrder, TexelSource, Texels, MAX_TEXTURE_SIDE};
+pub use source::{
+    ImageTexels, NoTexture, RawTexels, TexelByteOrder, TexelSource, Texels, MAX_TEXTURE_SIDE,
+};
 
 pub use crate::interpolate::{Perspective, SubSpan};
 

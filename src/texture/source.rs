@@ -66,6 +66,40 @@ pub trait TexelSource {
     fn texel(&self, x: u32, y: u32) -> Self::Color;
 }
 
+/// The texture type of a scene without textures: a [`TexelSource`] no value can have.
+///
+/// A [`band::Scene`](crate::band::Scene) names one texture type for all its textured
+/// triangles, and rendering it builds in texture mapping for that type. With `NoTexture` no
+/// triangle can be textured, so the compiler leaves all of that out: about 10 KB of flash on
+/// Cortex-M0 for a scene of flat and Gouraud triangles (`benches/firmware-size.sh`).
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+/// use trirast::{band::{Scene, SceneStyle}, texture::NoTexture, FlatStyle, Triangle};
+///
+/// let screen = Rectangle::new(Point::zero(), Size::new(8, 8));
+/// let mut scene: Scene<Rgb565, 4, NoTexture<Rgb565>> = Scene::new(screen);
+/// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+/// scene.push(t, SceneStyle::Flat(FlatStyle::new(Rgb565::RED)))?;
+/// # Ok::<(), trirast::Error>(())
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub struct NoTexture<C>(core::convert::Infallible, PhantomData<C>);
+
+impl<C: PixelColor> TexelSource for NoTexture<C> {
+    type Color = C;
+
+    fn size(&self) -> Size {
+        match self.0 {}
+    }
+
+    fn texel(&self, _x: u32, _y: u32) -> C {
+        match self.0 {}
+    }
+}
+
 /// The largest texture side: texture coordinates are `I16F16`, which reach just below 2^15.
 ///
 /// # Examples
