@@ -301,7 +301,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 fn reciprocal_2_62(divisor: u64) -> u64 {
     if cfg!(target_arch = "arm") {
         match u32::try_from(divisor) {
-            Ok(d @ 1..=0xFFFF) => reciprocal_by_digits(d),
+            Ok(d @ 1..=0xFFFF) => reciprocal_small(d),
             _ => div_rem_u64(1 << 62, divisor).0,
         }
     } else {
@@ -320,6 +320,49 @@ fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
         }
         _ => (1u64 << 62) / divisor.max(1),
     }
+}
+
+/// `floor(2^62 / d)` for `0 < d < 2^16` on Arm: by [`reciprocal_by_digits`] where 32-bit
+/// division is an instruction, by [`reciprocal_by_inverse`] on Cortex-M0, where each is a
+/// library call of about 140 instructions (measured: three of them were 15% of a small
+/// Gouraud triangle).
+#[inline(always)]
+fn reciprocal_small(d: u32) -> u64 {
+    if cfg!(target_has_atomic = "32") {
+        reciprocal_by_digits(d)
+    } else {
+        reciprocal_by_inverse(d)
+    }
+}
+
+/// [`reciprocal_by_digits`] with one division: each quotient digit is estimated by a
+/// multiplication with `floor((2^32 - 1) / d)`, at most two below the true digit, and
+/// corrected by subtracting `d`.
+#[inline(always)]
+fn reciprocal_by_inverse(d: u32) -> u64 {
+    // Between 2^32 / d - 1 and 2^32 / d.
+    let inverse = u32::MAX / d;
+    // floor(2^30 / d): inverse / 4 is at most one below it.
+    let top = 1u32 << 30;
+    let mut quotient = inverse >> 2;
+    let mut remainder = top - quotient * d;
+    if remainder >= d {
+        quotient += 1;
+        remainder -= d;
+    }
+    let mut quotient = u64::from(quotient);
+    for _ in 0..2 {
+        // remainder < d < 2^16: the dividend fits 32 bits and its digit 16.
+        let dividend = remainder << 16;
+        let mut digit = (widening_mul(dividend, inverse) >> 32) as u32;
+        remainder = dividend - digit * d;
+        while remainder >= d {
+            digit += 1;
+            remainder -= d;
+        }
+        quotient = (quotient << 16) | u64::from(digit);
+    }
+    quotient
 }
 
 /// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 = 2^30 * 2^32: 2^30 in one
@@ -795,6 +838,7 @@ mod tests {
             assert_eq!(div_rem_u64(1 << 62, d).0, (1u64 << 62) / d, "{d}");
             if let Ok(small @ 1..=0xFFFF) = u32::try_from(d) {
                 assert_eq!(reciprocal_by_digits(small), (1u64 << 62) / d, "{d}");
+                assert_eq!(reciprocal_by_inverse(small), (1u64 << 62) / d, "{d}");
             }
         };
         for d in 1..=70_000 {
