@@ -142,22 +142,19 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         let (fx, fy) = (first.0 & 255, first.1 & 255);
         // floor(g * f / 256) for 0 <= f < 256, without a wider product.
         let part = |g: i64, f: i64| (g >> 8).wrapping_mul(f) + (((g & 255) * f) >> 8);
-        let mut planes = Self::empty(origin);
+        let (mut base, mut dx, mut dy) = ([0; N], [0; N], [0; N]);
         let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
             let [nx, ny] = numerators(a1 - a0, a2 - a0, e);
-            let (dx, dy) = (gradient(nx), gradient(ny));
-            planes.dx[k] = dx;
-            planes.dy[k] = dy;
+            (dx[k], dy[k]) = (gradient(nx), gradient(ny));
             // The origin lies (fx, fy) / 256 pixel up and left of the vertex.
             let at_vertex = (a0 + bias) << (SETUP - STEP_BITS);
-            planes.base[k] = at_vertex
-                .wrapping_sub(part(dx, fx))
-                .wrapping_sub(part(dy, fy));
+            base[k] = at_vertex
+                .wrapping_sub(part(dx[k], fx))
+                .wrapping_sub(part(dy[k], fy));
         }
-        planes.finish();
-        Some(planes)
+        Some(Self::from_parts(origin, base, dx, dy))
     }
 
     /// [`Planes::new_exact`] for vertices in 1/256 pixel.
@@ -183,7 +180,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
-    /// for all gradients, and the first vertex as reference, where values are exact.
+    /// for all gradients, and the first vertex as reference, where values are exact. Inline:
+    /// out of line it measured 11 to 15% more instructions per small interpolated triangle on
+    /// Cortex-M4F (though 26 KB less flash for every mode on Cortex-M0).
     #[inline(always)]
     fn new_small(origin: Point, values: [[i64; N]; 3], bias: i64, e: [i64; 4]) -> Option<Self> {
         let [ex1, ey1, ex2, ey2] = e;
@@ -199,18 +198,19 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         let reciprocal = reciprocal_2_62(area.unsigned_abs());
         let shift = 62 - (SETUP - STEP_BITS);
         let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
-        let mut planes = Self::empty(origin);
+        // Local arrays, then one struct: filling a zeroed struct field by field left the
+        // zeroing (a library call) in place.
+        let (mut base, mut dx, mut dy) = ([0; N], [0; N], [0; N]);
         let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
             let (da1, da2) = (a1 - a0, a2 - a0);
             let [nx, ny] = numerators(da1, da2, e);
-            planes.dx[k] = gradient(nx);
-            planes.dy[k] = gradient(ny);
-            planes.base[k] = (a0 + bias) << (SETUP - STEP_BITS);
+            dx[k] = gradient(nx);
+            dy[k] = gradient(ny);
+            base[k] = (a0 + bias) << (SETUP - STEP_BITS);
         }
-        planes.finish();
-        Some(planes)
+        Some(Self::from_parts(origin, base, dx, dy))
     }
 
     /// Setup for any triangle: exact 128-bit arithmetic, values evaluated at `reference`.
@@ -249,6 +249,20 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             dy: [0; N],
             step: [0; N],
         }
+    }
+
+    /// Planes from their values at `origin` and gradients, with the steps derived.
+    #[inline(always)]
+    fn from_parts(origin: Point, base: [i64; N], dx: [i64; N], dy: [i64; N]) -> Self {
+        let mut planes = Self {
+            origin,
+            base,
+            dx,
+            dy,
+            step: [0; N],
+        };
+        planes.finish();
+        planes
     }
 
     /// Derives the per-pixel steps from the gradients.
