@@ -4,6 +4,7 @@ use core::cell::Cell;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
+use super::perspective::reciprocal;
 use crate::setup::lane::div_rem_u64;
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
@@ -349,34 +350,49 @@ fn reciprocal_small(d: u32) -> u64 {
     }
 }
 
-/// [`reciprocal_by_digits`] with one division: each quotient digit is estimated by a
-/// multiplication with `floor((2^32 - 1) / d)`, at most two below the true digit, and
-/// corrected by subtracting `d`.
+/// [`reciprocal_by_digits`] without a division: each base-2^16 digit of the quotient is
+/// estimated by a multiplication with `2^32 / d` (from [`reciprocal`]'s table and Newton
+/// steps, within 2^-26 relatively), a few units off at most, and corrected by comparing with
+/// `d`. Exact: the corrections leave each digit's remainder in `0..d`.
 #[inline(always)]
 fn reciprocal_by_inverse(d: u32) -> u64 {
-    // Between 2^32 / d - 1 and 2^32 / d.
-    let inverse = u32::MAX / d;
-    // floor(2^30 / d): inverse / 4 is at most one below it.
-    let top = 1u32 << 30;
-    let mut quotient = inverse >> 2;
-    let mut remainder = top - quotient * d;
-    if remainder >= d {
-        quotient += 1;
-        remainder -= d;
-    }
-    let mut quotient = u64::from(quotient);
-    for _ in 0..2 {
+    let (normal, shift) = normalise_small(d);
+    // 2^63 / (d * 2^shift) down to about 2^32 / d.
+    let inverse = reciprocal(normal) >> (31 - shift);
+    let mut quotient = 0u64;
+    let mut remainder = 0u32;
+    // 2^62 is the digits 0x4000, 0, 0, 0.
+    for digit in [0x4000, 0, 0, 0] {
         // remainder < d < 2^16: the dividend fits 32 bits and its digit 16.
-        let dividend = remainder << 16;
-        let mut digit = (widening_mul(dividend, inverse) >> 32) as u32;
-        remainder = dividend - digit * d;
-        while remainder >= d {
-            digit += 1;
-            remainder -= d;
+        let dividend = (remainder << 16) | digit;
+        let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
+        // q is at most a few above the digit: q * d stays below 2^32.
+        while q * d > dividend {
+            q -= 1;
         }
-        quotient = (quotient << 16) | u64::from(digit);
+        let mut r = dividend - q * d;
+        while r >= d {
+            q += 1;
+            r -= d;
+        }
+        quotient = (quotient << 16) | u64::from(q);
+        remainder = r;
     }
     quotient
+}
+
+/// `d << shift` in `[2^31, 2^32)` and `shift`, for `0 < d < 2^16`: four steps, where counting
+/// leading zeros is a library call on Cortex-M0.
+#[inline(always)]
+fn normalise_small(d: u32) -> (u32, u32) {
+    let (mut normal, mut shift) = (d << 16, 16);
+    for step in [8, 4, 2, 1] {
+        if normal < 1 << (32 - step) {
+            normal <<= step;
+            shift += step;
+        }
+    }
+    (normal, shift)
 }
 
 /// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 = 2^30 * 2^32: 2^30 in one
