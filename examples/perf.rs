@@ -300,7 +300,7 @@ fn texture_frame<D>(
         let uv = if tiled {
             t.vertices.map(tiled_coordinates)
         } else {
-            modes::stretched_coordinates(t.vertices)
+            t.coordinates
         };
         let mut style = TextureStyle::new(texture, uv)
             .with_filter(filter)

@@ -204,18 +204,6 @@ pub fn texel(i: u32, side: u32) -> Rgb565 {
     )
 }
 
-/// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
-/// bounding box.
-pub fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
-    let xs = vertices.map(|p| p.x);
-    let ys = vertices.map(|p| p.y);
-    let (x0, x1) = (xs.iter().min().unwrap(), xs.iter().max().unwrap());
-    let (y0, y1) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
-    let along =
-        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
-    vertices.map(|p| [along(p.x, *x0, *x1), along(p.y, *y0, *y1)])
-}
-
 /// Depths of triangle `k` of `count` in the depth modes: each triangle nearer than those
 /// before, depths falling by `gap` from one triangle to the next and by less across each.
 pub fn layered_depths(k: usize, count: usize) -> [u16; 3] {
@@ -423,8 +411,7 @@ fn draw_textured<'t, G>(
     G: Shape + StyledDrawable<TextureStyle<Texels<'t, Rgb565>>, Color = Rgb565, Output = ()>,
 {
     for t in triangles {
-        let style =
-            TextureStyle::new(texture, stretched_coordinates(t.vertices)).with_filter(filter);
+        let style = TextureStyle::new(texture, t.coordinates).with_filter(filter);
         let _ = shape(t).draw_styled(&style, frame);
     }
 }
@@ -438,7 +425,7 @@ fn draw_perspective(
     filter: Filter,
 ) {
     for t in triangles {
-        let style = TextureStyle::new(texture, stretched_coordinates(t.vertices))
+        let style = TextureStyle::new(texture, t.coordinates)
             .with_filter(filter)
             .with_perspective(Perspective::new(receding_w(t.vertices)));
         let _ = Triangle {

@@ -3,18 +3,23 @@
 #![allow(dead_code)]
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use fixed::types::I16F16;
 
 /// Screen width of every scene.
 pub const WIDTH: u32 = 320;
 /// Screen height of every scene.
 pub const HEIGHT: u32 = 240;
 
-/// A triangle with a flat colour and per-vertex colours (modes use one or the other).
+/// A triangle with a flat colour, per-vertex colours and texture coordinates (modes use what
+/// they need).
 #[derive(Copy, Clone, Debug)]
 pub struct SceneTriangle {
     pub vertices: [Point; 3],
     pub color: Rgb565,
     pub vertex_colors: [Rgb565; 3],
+    /// [`stretched_coordinates`], computed with the scene: its divisions are the benchmark's,
+    /// not drawing.
+    pub coordinates: [[I16F16; 2]; 3],
 }
 
 /// splitmix64: tiny, fast, and the same on every platform.
@@ -50,7 +55,20 @@ fn triangle(rng: &mut Rng, vertices: [Point; 3]) -> SceneTriangle {
         vertices,
         color: rng.color(),
         vertex_colors: [rng.color(), rng.color(), rng.color()],
+        coordinates: stretched_coordinates(vertices),
     }
+}
+
+/// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
+/// bounding box.
+pub fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
+    let xs = vertices.map(|p| p.x);
+    let ys = vertices.map(|p| p.y);
+    let (x0, x1) = (xs.iter().min().unwrap(), xs.iter().max().unwrap());
+    let (y0, y1) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
+    let along =
+        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
+    vertices.map(|p| [along(p.x, *x0, *x1), along(p.y, *y0, *y1)])
 }
 
 /// The scenes, by name.
