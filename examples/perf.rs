@@ -300,7 +300,7 @@ fn texture_frame<D>(
         let uv = if tiled {
             t.vertices.map(tiled_coordinates)
         } else {
-            t.coordinates
+            modes::coordinates(t)
         };
         let mut style = TextureStyle::new(texture, uv)
             .with_filter(filter)

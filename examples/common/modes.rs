@@ -204,6 +204,11 @@ pub fn texel(i: u32, side: u32) -> Rgb565 {
     )
 }
 
+/// The scene's texture coordinates of `t`, as `I16F16`.
+pub fn coordinates(t: &SceneTriangle) -> [[I16F16; 2]; 3] {
+    t.coordinates.map(|uv| uv.map(I16F16::from_bits))
+}
+
 /// Depths of triangle `k` of `count` in the depth modes: each triangle nearer than those
 /// before, depths falling by `gap` from one triangle to the next and by less across each.
 pub fn layered_depths(k: usize, count: usize) -> [u16; 3] {
@@ -411,7 +416,7 @@ fn draw_textured<'t, G>(
     G: Shape + StyledDrawable<TextureStyle<Texels<'t, Rgb565>>, Color = Rgb565, Output = ()>,
 {
     for t in triangles {
-        let style = TextureStyle::new(texture, t.coordinates).with_filter(filter);
+        let style = TextureStyle::new(texture, coordinates(t)).with_filter(filter);
         let _ = shape(t).draw_styled(&style, frame);
     }
 }
@@ -425,7 +430,7 @@ fn draw_perspective(
     filter: Filter,
 ) {
     for t in triangles {
-        let style = TextureStyle::new(texture, t.coordinates)
+        let style = TextureStyle::new(texture, coordinates(t))
             .with_filter(filter)
             .with_perspective(Perspective::new(receding_w(t.vertices)));
         let _ = Triangle {

@@ -3,7 +3,6 @@
 #![allow(dead_code)]
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
-use fixed::types::I16F16;
 
 /// Screen width of every scene.
 pub const WIDTH: u32 = 320;
@@ -18,8 +17,8 @@ pub struct SceneTriangle {
     pub color: Rgb565,
     pub vertex_colors: [Rgb565; 3],
     /// [`stretched_coordinates`], computed with the scene: its divisions are the benchmark's,
-    /// not drawing.
-    pub coordinates: [[I16F16; 2]; 3],
+    /// not drawing. Raw `I16F16` bits, so that the scenes need no fixed-point crate.
+    pub coordinates: [[i32; 2]; 3],
 }
 
 /// splitmix64: tiny, fast, and the same on every platform.
@@ -60,14 +59,13 @@ fn triangle(rng: &mut Rng, vertices: [Point; 3]) -> SceneTriangle {
 }
 
 /// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
-/// bounding box.
-pub fn stretched_coordinates(vertices: [Point; 3]) -> [[I16F16; 2]; 3] {
+/// bounding box, as raw `I16F16` bits.
+pub fn stretched_coordinates(vertices: [Point; 3]) -> [[i32; 2]; 3] {
     let xs = vertices.map(|p| p.x);
     let ys = vertices.map(|p| p.y);
     let (x0, x1) = (xs.iter().min().unwrap(), xs.iter().max().unwrap());
     let (y0, y1) = (ys.iter().min().unwrap(), ys.iter().max().unwrap());
-    let along =
-        |t: i32, t0: i32, t1: i32| I16F16::from_bits((((t - t0) * 63) << 16) / (t1 - t0).max(1));
+    let along = |t: i32, t0: i32, t1: i32| (((t - t0) * 63) << 16) / (t1 - t0).max(1);
     vertices.map(|p| [along(p.x, *x0, *x1), along(p.y, *y0, *y1)])
 }
 
