@@ -325,14 +325,15 @@ fn reciprocal_2_62(divisor: u64) -> u64 {
 }
 
 /// [`reciprocal_2_62`] for sub-pixel triangles, whose doubled areas in 1/65,536 pixel units
-/// are mostly 2^16 or more: the 64-bit library division, but for divisors below 2^16 on cores
-/// with a hardware divide (Cortex-M3 and up, which `target_has_atomic` tells from Cortex-M0).
-#[inline(always)]
+/// are mostly 2^16 or more (where the whole-pixel path's shift and subtract would be slow): on
+/// Arm by [`reciprocal_by_correction`], without the 64-bit library division either. Out of
+/// line on Arm, as [`reciprocal_2_62`].
+#[cfg_attr(target_arch = "arm", inline(never))]
+#[cfg_attr(not(target_arch = "arm"), inline(always))]
 fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
     match u32::try_from(divisor) {
-        Ok(d @ 1..=0xFFFF) if cfg!(all(target_arch = "arm", target_has_atomic = "32")) => {
-            reciprocal_by_digits(d)
-        }
+        Ok(d @ 1..=0xFFFF) if cfg!(target_arch = "arm") => reciprocal_small(d),
+        Ok(d @ 0x1_0000..=0x7FFF_FFFF) if cfg!(target_arch = "arm") => reciprocal_by_correction(d),
         _ => (1u64 << 62) / divisor.max(1),
     }
 }
@@ -356,7 +357,7 @@ fn reciprocal_small(d: u32) -> u64 {
 /// `d`. Exact: the corrections leave each digit's remainder in `0..d`.
 #[inline(always)]
 fn reciprocal_by_inverse(d: u32) -> u64 {
-    let (normal, shift) = normalise_small(d);
+    let (normal, shift) = normalise(d);
     // 2^63 / (d * 2^shift) down to about 2^32 / d.
     let inverse = reciprocal(normal) >> (31 - shift);
     let mut quotient = 0u64;
@@ -381,12 +382,62 @@ fn reciprocal_by_inverse(d: u32) -> u64 {
     quotient
 }
 
-/// `d << shift` in `[2^31, 2^32)` and `shift`, for `0 < d < 2^16`: four steps, where counting
-/// leading zeros is a library call on Cortex-M0.
+/// `floor(2^62 / d)` for `2^16 <= d < 2^31` without a division: `2^63 / (d 2^shift)` from
+/// [`reciprocal`] (within 2^-26), scaled to about `2^62 / d`; one correction by the exact
+/// remainder `2^62 - q d` (below 2^37 in magnitude) times that reciprocal; then the last few
+/// units by comparing the remainder with `d`. Out of line: one copy for every setup.
+#[inline(never)]
+fn reciprocal_by_correction(d: u32) -> u64 {
+    let (normal, shift) = normalise(d);
+    let inverse = reciprocal(normal);
+    let remainder = |q: u64| (1u64 << 62).wrapping_sub(mul_low(q, d)) as i64;
+    // About 2^(63 - shift) / d * 2^(shift - 1); shift is 1 to 15.
+    let mut q = u64::from(inverse) << (shift - 1);
+    let error = remainder(q);
+    // error / d as error * inverse / 2^(63 - shift), from the error's halves: within 3.
+    let magnitude = error.unsigned_abs();
+    let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
+    let step = (mul_wide(high, inverse) >> (31 - shift)) + (mul_wide(low, inverse) >> (63 - shift));
+    q = if error < 0 { q - step } else { q + step };
+    let (mut rest, d) = (remainder(q), i64::from(d));
+    while rest < 0 {
+        q -= 1;
+        rest += d;
+    }
+    while rest >= d {
+        q += 1;
+        rest -= d;
+    }
+    q
+}
+
+/// The low 64 bits of `q * d`: two 32-bit products.
 #[inline(always)]
-fn normalise_small(d: u32) -> (u32, u32) {
-    let (mut normal, mut shift) = (d << 16, 16);
-    for step in [8, 4, 2, 1] {
+fn mul_low(q: u64, d: u32) -> u64 {
+    let (high, low) = ((q >> 32) as u32, q as u32);
+    mul_wide(low, d).wrapping_add(u64::from(high.wrapping_mul(d)) << 32)
+}
+
+/// `a * b` in full: one instruction from Cortex-M3 up, [`widening_mul`] on Cortex-M0.
+#[inline(always)]
+fn mul_wide(a: u32, b: u32) -> u64 {
+    if cfg!(target_has_atomic = "32") {
+        u64::from(a) * u64::from(b)
+    } else {
+        widening_mul(a, b)
+    }
+}
+
+/// `d << shift` in `[2^31, 2^32)` and `shift`, for `d > 0`: counting leading zeros is an
+/// instruction from Cortex-M3 up and a library call on Cortex-M0, where five steps do.
+#[inline(always)]
+fn normalise(d: u32) -> (u32, u32) {
+    if cfg!(target_has_atomic = "32") {
+        let shift = d.leading_zeros();
+        return (d << shift, shift);
+    }
+    let (mut normal, mut shift) = (d, 0);
+    for step in [16, 8, 4, 2, 1] {
         if normal < 1 << (32 - step) {
             normal <<= step;
             shift += step;
@@ -866,6 +917,9 @@ mod tests {
             assert_eq!(reciprocal_2_62_subpixel(d), (1u64 << 62) / d, "{d}");
             // The shift and subtract Arm takes for divisors of 2^16 and more.
             assert_eq!(div_rem_u64(1 << 62, d).0, (1u64 << 62) / d, "{d}");
+            if let Ok(wide @ 0x1_0000..=0x7FFF_FFFF) = u32::try_from(d) {
+                assert_eq!(reciprocal_by_correction(wide), (1u64 << 62) / d, "{d}");
+            }
             if let Ok(small @ 1..=0xFFFF) = u32::try_from(d) {
                 assert_eq!(reciprocal_by_digits(small), (1u64 << 62) / d, "{d}");
                 assert_eq!(reciprocal_by_inverse(small), (1u64 << 62) / d, "{d}");
@@ -881,8 +935,22 @@ mod tests {
             x ^= x << 17;
             check(1 + x % ((1 << 31) - 1));
         }
-        for d in [(1 << 16) - 1, 1 << 16, (1 << 31) - 1, 1 << 30] {
+        for d in [
+            (1 << 16) - 1,
+            1 << 16,
+            (1 << 31) - 1,
+            1 << 30,
+            (1 << 30) + 1,
+            3 << 29,
+        ] {
             check(d);
+        }
+        for shift in 0..31 {
+            for d in [(1u64 << shift) - 1, 1 << shift, (1 << shift) + 1] {
+                if (1..1 << 31).contains(&d) {
+                    check(d);
+                }
+            }
         }
     }
 
