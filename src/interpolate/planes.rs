@@ -974,6 +974,38 @@ mod tests {
     }
 
     #[test]
+    fn split_scaling_is_the_128_bit_one() {
+        // Numerators below 2^62 in magnitude (multiples of 2^16 and not), reciprocals below
+        // 2^62, shifts of every setup precision.
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..200_000 {
+            let bits = next() % 62;
+            let mut numerator = (next() >> (64 - bits).min(63)) as i64;
+            if next() & 1 == 0 {
+                numerator &= !0xFFFF;
+            }
+            if next() & 1 == 0 {
+                numerator = -numerator;
+            }
+            let reciprocal = next() >> (2 + next() % 40);
+            let negative = next() & 1 == 0;
+            for shift in [17, 24, 32, 38, 46] {
+                assert_eq!(
+                    scale_split(numerator, reciprocal, negative, shift),
+                    scale_wide(numerator, reciprocal, negative, shift),
+                    "{numerator} {reciprocal} {negative} {shift}"
+                );
+            }
+        }
+    }
+
+    #[test]
     fn split_numerators_are_the_64_bit_ones() {
         let deltas = [
             0i64,
