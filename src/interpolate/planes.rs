@@ -494,7 +494,7 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
             let high = widening_mul(magnitude as u32, (reciprocal >> 32) as u32);
             u128::from(low) + (u128::from(high) << 32)
         } else {
-            u128::from(magnitude) * u128::from(reciprocal)
+            wide_product(magnitude, reciprocal)
         };
         product as i128
     };
@@ -515,6 +515,21 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
         let scaled = sign(product(numerator.unsigned_abs()));
         ((scaled + (1 << (shift - 1))) >> shift) as i64
     }
+}
+
+/// `magnitude * reciprocal` in full for [`scale_split`]'s wide numerators (perspective planes'):
+/// four 32 x 32-bit products, where a 128-bit one is several 64-bit library multiplies. Out of
+/// line, so that the common setup stays small enough to inline.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(never)]
+fn wide_product(magnitude: u64, reciprocal: u64) -> u128 {
+    let (upper, lower) = ((magnitude >> 32) as u32, magnitude as u32);
+    let (reciprocal_high, reciprocal_low) = ((reciprocal >> 32) as u32, reciprocal as u32);
+    let middle = u128::from(widening_mul(lower, reciprocal_high))
+        + u128::from(widening_mul(upper, reciprocal_low));
+    u128::from(widening_mul(lower, reciprocal_low))
+        + (middle << 32)
+        + (u128::from(widening_mul(upper, reciprocal_high)) << 64)
 }
 
 /// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
