@@ -304,13 +304,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 
 /// `floor(2^62 / divisor)`, for `0 < divisor < 2^31` (a doubled area under 2^15-pixel
 /// deltas). On Arm, divisors below 2^16 (triangles under 32,768 pixels, the common case) take
-/// [`reciprocal_by_digits`]: four 32-bit divides, in hardware from Cortex-M3 up (measured: 3
-/// to 4% fewer instructions per small interpolated triangle on Cortex-M4F than the 64-bit
-/// library division), library calls on Cortex-M0 (where the two measure the same). Larger
-/// ones shift and subtract ([`div_rem_u64`], some 800 instructions on Cortex-M0, under 1% of
-/// drawing such a triangle), so that the ~1 KB 64-bit division routine stays out of the
-/// flash. x86-64 divides 64 bits in hardware. Out of line on Arm: one copy serves every
-/// plane setup.
+/// [`reciprocal_small`]: no division on Cortex-M0, three hardware divides from Cortex-M3 up.
+/// Larger ones shift and subtract ([`div_rem_u64`], some 800 instructions on Cortex-M0, under
+/// 1% of drawing such a triangle), so that neither the ~1 KB 64-bit division routine nor
+/// [`reciprocal_by_correction`] is in every mode's flash. x86-64 divides 64 bits in hardware.
+/// Out of line on Arm: one copy serves every plane setup.
 #[cfg_attr(target_arch = "arm", inline(never))]
 #[cfg_attr(not(target_arch = "arm"), inline(always))]
 fn reciprocal_2_62(divisor: u64) -> u64 {
@@ -367,7 +365,8 @@ fn reciprocal_by_inverse(d: u32) -> u64 {
         // remainder < d < 2^16: the dividend fits 32 bits and its digit 16.
         let dividend = (remainder << 16) | digit;
         let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
-        // q is at most a few above the digit: q * d stays below 2^32.
+        // q is at most a few above the digit, and q * d below 2^32 (the unit test tries
+        // every d, which fixes every dividend).
         while q * d > dividend {
             q -= 1;
         }
