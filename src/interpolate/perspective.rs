@@ -200,7 +200,7 @@ pub(crate) fn reciprocal(d: u32) -> u32 {
 /// `a * b` in full: one multiply on cores that have it, four 16-bit ones on Cortex-M0 (where
 /// a 64-bit multiply is a call of about forty instructions). The same bits either way.
 #[inline(always)]
-fn mul_u32(a: u32, b: u32) -> u64 {
+pub(super) fn mul_u32(a: u32, b: u32) -> u64 {
     if cfg!(target_has_atomic = "32") {
         u64::from(a) * u64::from(b)
     } else {

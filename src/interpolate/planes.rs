@@ -4,7 +4,7 @@ use core::cell::Cell;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-use super::perspective::reciprocal;
+use super::perspective::{mul_u32, reciprocal};
 use crate::setup::lane::div_rem_u64;
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
@@ -396,7 +396,7 @@ fn reciprocal_by_correction(d: u32) -> u64 {
     // error / d as error * inverse / 2^(63 - shift), from the error's halves: within 3.
     let magnitude = error.unsigned_abs();
     let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
-    let step = (mul_wide(high, inverse) >> (31 - shift)) + (mul_wide(low, inverse) >> (63 - shift));
+    let step = (mul_u32(high, inverse) >> (31 - shift)) + (mul_u32(low, inverse) >> (63 - shift));
     q = if error < 0 { q - step } else { q + step };
     let (mut rest, d) = (remainder(q), i64::from(d));
     while rest < 0 {
@@ -414,17 +414,7 @@ fn reciprocal_by_correction(d: u32) -> u64 {
 #[inline(always)]
 fn mul_low(q: u64, d: u32) -> u64 {
     let (high, low) = ((q >> 32) as u32, q as u32);
-    mul_wide(low, d).wrapping_add(u64::from(high.wrapping_mul(d)) << 32)
-}
-
-/// `a * b` in full: one instruction from Cortex-M3 up, [`widening_mul`] on Cortex-M0.
-#[inline(always)]
-fn mul_wide(a: u32, b: u32) -> u64 {
-    if cfg!(target_has_atomic = "32") {
-        u64::from(a) * u64::from(b)
-    } else {
-        widening_mul(a, b)
-    }
+    mul_u32(low, d).wrapping_add(u64::from(high.wrapping_mul(d)) << 32)
 }
 
 /// `d << shift` in `[2^31, 2^32)` and `shift`, for `d > 0`: counting leading zeros is an
