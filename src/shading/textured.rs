@@ -13,10 +13,7 @@ use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
     interpolate::{mul_small, PerspectivePlanes, Planes, Stretch, TrackedPlanes},
-    texture::{
-        Axis, Clamped, Direct, Filter, Perspective, Pow2Repeated, Repeated, TexelSource, Wrap,
-        COORDINATE_BITS,
-    },
+    texture::{Axis, Direct, Filter, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS},
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
@@ -462,17 +459,15 @@ where
         };
         // Affine steps are the same for every run: addressed once here.
         let [du, dv] = coordinates.dx;
-        let addressing = match style.wrap {
-            Wrap::Clamp => Addressing::Clamp(Clamped::new(size.width), Clamped::new(size.height)),
-            Wrap::Repeat => {
-                let pow2 = Pow2Repeated::new(size.width).zip(Pow2Repeated::new(size.height));
-                if let Some((u, v)) = pow2 {
-                    Addressing::Pow2(u, v, u.step(du), v.step(dv))
-                } else {
-                    let (u, v) = (Repeated::new(size.width), Repeated::new(size.height));
-                    Addressing::Repeat(u, v, u.step(du), v.step(dv))
-                }
-            }
+        let (u, v) = match style.wrap {
+            Wrap::Clamp => (Wrapped::clamp(size.width), Wrapped::clamp(size.height)),
+            Wrap::Repeat => (Wrapped::repeat(size.width), Wrapped::repeat(size.height)),
+        };
+        let addressing = Addressing {
+            u,
+            v,
+            du: u.step(du),
+            dv: v.step(dv),
         };
         Self {
             texture,
@@ -591,9 +586,9 @@ where
         }
     }
 
-    /// Shades a run that leaves the texture: a loop per wrap mode and filter, each serving
-    /// both modulations, which it reads per pixel. Out of line: rarer than runs inside (but
-    /// most runs of a tiled texture), and flash matters more.
+    /// Shades a run that leaves the texture: a loop per filter, each serving both wrap modes
+    /// (`Wrapped`) and both modulations, which it reads per pixel. Out of line: rarer than
+    /// runs inside (but most runs of a tiled texture), and flash matters more.
     #[inline(never)]
     fn shade_addressed<D>(
         &self,
@@ -609,21 +604,13 @@ where
     {
         // Affine steps were addressed with the triangle; perspective ones change per
         // sub-span.
-        let affine = self.perspective.is_none();
-        match self.addressing {
-            Addressing::Clamp(u, v) => {
-                let steps = (steps[0], steps[1]);
-                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
-            }
-            Addressing::Pow2(u, v, du, dv) => {
-                let steps = addressed_steps(affine, (u, v), (du, dv), steps);
-                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
-            }
-            Addressing::Repeat(u, v, du, dv) => {
-                let steps = addressed_steps(affine, (u, v), (du, dv), steps);
-                self.shade_filtered((u, v), steps, start, tint, run, offset, target)
-            }
-        }
+        let Addressing { u, v, du, dv } = self.addressing;
+        let steps = if self.perspective.is_none() {
+            (du, dv)
+        } else {
+            (u.step(steps[0]), v.step(steps[1]))
+        };
+        self.shade_filtered((u, v), steps, start, tint, run, offset, target)
     }
 
     /// Shades an addressed run with this filter's loop, which reads the modulation per pixel.
@@ -731,31 +718,14 @@ fn across(steps: u32, gradient: i64) -> Option<i64> {
     }
 }
 
-/// The per-pixel steps of a run in `axes`' terms: the ones addressed with the triangle when
-/// the mapping is affine, else `gradient` (2^-46 texels per pixel) addressed now.
-#[inline(always)]
-fn addressed_steps<A: Axis>(
-    affine: bool,
-    (u, v): (A, A),
-    triangle_steps: (A::Coord, A::Coord),
-    gradient: [i64; 2],
-) -> (A::Coord, A::Coord) {
-    if affine {
-        triangle_steps
-    } else {
-        (u.step(gradient[0]), v.step(gradient[1]))
-    }
-}
-
 /// How a textured triangle addresses runs that leave the texture, with the affine per-pixel
 /// steps in the addressing's terms (computed once per triangle).
 #[derive(Copy, Clone, Debug)]
-enum Addressing {
-    Clamp(Clamped, Clamped),
-    /// Repeat, both sides powers of two.
-    Pow2(Pow2Repeated, Pow2Repeated, u64, u64),
-    /// Repeat, any sides.
-    Repeat(Repeated, Repeated, i64, i64),
+struct Addressing {
+    u: Wrapped,
+    v: Wrapped,
+    du: i64,
+    dv: i64,
 }
 
 impl<T, const M: usize> Painter for TexturedPainter<'_, T, M>
