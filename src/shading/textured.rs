@@ -637,36 +637,6 @@ where
         }
     }
 
-    /// [`TexturedPainter::shade_run`] out of line, for perspective sub-spans of row `y`:
-    /// affine runs keep the span loops inline (measured: a call per run costs 3 to 5% per
-    /// small textured triangle on Cortex-M0 and M4F), perspective ones share this copy.
-    #[inline(never)]
-    fn shade_sub_span<D>(
-        &self,
-        sub_span: &Stretch<2>,
-        y: i32,
-        tint: Option<[u32; M]>,
-        offset: Point,
-        target: &mut D,
-    ) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = T::Color>,
-    {
-        // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
-        let inside = (0..2).all(|k| {
-            let limit = self.sub_span_limits[k];
-            (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
-        });
-        let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
-        let run = Span {
-            x: sub_span.x,
-            y,
-            len: sub_span.len,
-        };
-        let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
-        self.shade_run(run, start, steps, inside, tint, offset, target)
-    }
-
     /// Paints `run` in perspective: sub-span by sub-span, each stepped linearly between the
     /// exact coordinates at its ends ([`PerspectivePlanes::next_sub_span`]).
     #[inline(never)]
@@ -688,7 +658,12 @@ where
                 let pixels = sub_span.x.wrapping_sub(run.x) as u32;
                 core::array::from_fn(|k| at[k].wrapping_add(step[k].wrapping_mul(pixels)))
             });
-            self.shade_sub_span(&sub_span, run.y, tint, offset, target)?;
+            let stretch = Span {
+                x: sub_span.x,
+                y: run.y,
+                len: sub_span.len,
+            };
+            self.paint_linear(stretch, Some((&sub_span, tint)), offset, target)?;
         }
         Ok(())
     }
@@ -742,7 +717,7 @@ where
     {
         match self.perspective {
             Some(planes) => self.paint_perspective(planes, run, offset, target),
-            None => self.paint_affine(run, offset, target),
+            None => self.paint_linear(run, None, offset, target),
         }
     }
 }
@@ -752,24 +727,44 @@ where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
 {
-    /// Paints `run` mapped affinely: one span loop from the run's start to its end. Out of
-    /// line, one copy per target for every walk, compiled apart from the perspective path
-    /// (sharing a function with it, the nearest loop kept one register fewer: 18 instructions
-    /// a pixel on Cortex-M4F instead of 17).
+    /// Paints `run` with coordinates stepped linearly: the whole run when the mapping is
+    /// affine (`sub_span` is `None`), else one perspective sub-span with its coordinates and
+    /// modulation factors. One out-of-line copy per target of the four span loops inside the
+    /// texture, which both mappings share (a copy each cost 3.9 KB on Cortex-M0).
     #[inline(never)]
-    fn paint_affine<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    fn paint_linear<D>(
+        &self,
+        run: Span,
+        sub_span: Option<(&Stretch<2>, Option<[u32; M]>)>,
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        let planes = &self.coordinates;
-        // The coordinates at the run's start, evaluated once for the test and the loop.
-        let start = planes.at_exact(run.x, run.y);
-        let steps = planes.planes.dx;
-        let end = core::array::from_fn(|k| {
-            across(run.len - 1, steps[k]).and_then(|d| d.checked_add(start[k]))
-        });
-        let inside = self.inside(start, end);
-        self.shade_run(run, start, steps, inside, None, offset, target)
+        let (start, steps, inside, tint) = match sub_span {
+            None => {
+                let planes = &self.coordinates;
+                // The coordinates at the run's start, evaluated once for the test and the loop.
+                let start = planes.at_exact(run.x, run.y);
+                let steps = planes.planes.dx;
+                let end = core::array::from_fn(|k| {
+                    across(run.len - 1, steps[k]).and_then(|d| d.checked_add(start[k]))
+                });
+                (start, steps, self.inside(start, end), None)
+            }
+            Some((sub_span, tint)) => {
+                // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
+                let inside = (0..2).all(|k| {
+                    let limit = self.sub_span_limits[k];
+                    (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
+                });
+                let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
+                let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
+                (start, steps, inside, tint)
+            }
+        };
+        self.shade_run(run, start, steps, inside, tint, offset, target)
     }
 }
 
