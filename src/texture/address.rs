@@ -146,9 +146,10 @@ impl Axis for Wrapped {
     }
 
     // The texel of any i64 coordinate fits an i32 (18 bits): clamping in 32 bits is cheaper.
+    // (`max` then `min`, not `clamp`, which would check `0 <= last` and bring in a panic.)
     #[inline(always)]
     fn nearest(self, coord: i64) -> u32 {
-        ((coord >> COORDINATE_BITS) as i32).clamp(0, self.last) as u32
+        ((coord >> COORDINATE_BITS) as i32).max(0).min(self.last) as u32
     }
 
     #[inline(always)]
@@ -160,7 +161,7 @@ impl Axis for Wrapped {
         } else {
             (texel + 1).max(0) as u32
         };
-        (texel.clamp(0, self.last) as u32, right, fraction)
+        (texel.max(0).min(self.last) as u32, right, fraction)
     }
 }
 
