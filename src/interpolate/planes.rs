@@ -181,10 +181,16 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
-    /// for all gradients, and the first vertex as reference, where values are exact. Inline:
-    /// out of line it measured 11 to 15% more instructions per small interpolated triangle on
-    /// Cortex-M4F (though 26 KB less flash for every mode on Cortex-M0).
-    #[inline(always)]
+    /// for all gradients, and the first vertex as reference, where values are exact.
+    ///
+    /// Out of line on cores without a 64-bit multiply (Cortex-M0/M0+), where flash is
+    /// scarcest: one copy per number of planes instead of one per style and target, 25 KB
+    /// less in the every-mode firmware for 1 to 7% more instructions per small interpolated
+    /// triangle (the depth plane then computes the area's reciprocal again). Inline elsewhere:
+    /// out of line it measured 11 to 15% more per small interpolated triangle on Cortex-M4F,
+    /// for 11 KB.
+    #[cfg_attr(not(target_has_atomic = "32"), inline(never))]
+    #[cfg_attr(target_has_atomic = "32", inline(always))]
     fn new_small(origin: Point, values: [[i64; N]; 3], bias: i64, e: [i64; 4]) -> Option<Self> {
         let [ex1, ey1, ex2, ey2] = e;
         // |deltas| < 2^15: doubled area below 2^31, numerators below 2^49. The area in 32-bit
@@ -552,9 +558,18 @@ fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
     {
         numerators_split(da1, da2, e)
     } else {
-        let [ex1, ey1, ex2, ey2] = e.map(i64::from);
-        [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
+        numerators_wide(da1, da2, e)
     }
+}
+
+/// [`numerators`] in 64-bit products. Out of line on cores without a 64-bit multiply, where
+/// each product is a library call: inline, the optimiser computed these speculatively next to
+/// the 32-bit ones and kept whichever the test chose (measured: four calls per depth plane).
+#[cfg_attr(not(target_has_atomic = "32"), inline(never))]
+#[cfg_attr(target_has_atomic = "32", inline(always))]
+fn numerators_wide(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
+    let [ex1, ey1, ex2, ey2] = e.map(i64::from);
+    [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
 }
 
 /// [`numerators`] for value deltas below 2^32, in 32-bit multiplies.
