@@ -124,8 +124,14 @@ impl Axis for Wrapped {
             // Power-of-two side: the remainder is the low bits, negative values included.
             value & (period - 1)
         } else {
-            // The period is below 2^62, so the reduced value is a positive i64.
-            value.rem_euclid(period)
+            // Euclidean remainder in unsigned arithmetic (the period is positive and below
+            // 2^62): `rem_euclid` would check for `i64::MIN % -1` and bring in a panic.
+            let period = period as u64;
+            if value >= 0 {
+                (value as u64 % period) as i64
+            } else {
+                (period - 1 - (!value) as u64 % period) as i64
+            }
         }
     }
 
