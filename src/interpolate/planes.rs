@@ -662,7 +662,7 @@ fn exact_plane(
     let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
     let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
     // Deltas below 2^33, raw values below 2^34: every product below 2^100.
-    let area = ex1 * ey2 - ex2 * ey1;
+    let area = mul(ex1, ey2) - mul(ex2, ey1);
     if area == 0 {
         return None;
     }
@@ -670,14 +670,13 @@ fn exact_plane(
         i128::from(reference.x) - p0.0,
         i128::from(reference.y) - p0.1,
     );
-    let scale = 1i128 << scale_bits;
     let [a0, a1, a2] = values.map(i128::from);
     let (da1, da2) = (a1 - a0, a2 - a0);
-    let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
-    let dx = div_round(nx * scale, area) as i64;
-    let dy = div_round(ny * scale, area) as i64;
-    let offset = div_round((nx * rx + ny * ry) * scale, area);
-    let base = ((a0 + i128::from(bias)) * scale + offset) as i64;
+    let (nx, ny) = (mul(da1, ey2) - mul(da2, ey1), mul(da2, ex1) - mul(da1, ex2));
+    let dx = div_round(nx << scale_bits, area) as i64;
+    let dy = div_round(ny << scale_bits, area) as i64;
+    let offset = div_round((mul(nx, rx) + mul(ny, ry)) << scale_bits, area);
+    let base = (((a0 + i128::from(bias)) << scale_bits) + offset) as i64;
     Some((base, dx, dy))
 }
 
@@ -696,7 +695,7 @@ fn exact_plane_subpixel(
     let [p0, p1, p2] = vertices.map(|(x, y)| (i128::from(x), i128::from(y)));
     let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
     let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
-    let area = ex1 * ey2 - ex2 * ey1;
+    let area = mul(ex1, ey2) - mul(ex2, ey1);
     if area == 0 {
         return None;
     }
@@ -704,21 +703,28 @@ fn exact_plane_subpixel(
         256 * i128::from(reference.x) - p0.0,
         256 * i128::from(reference.y) - p0.1,
     );
-    let scale = 1i128 << scale_bits;
     let [a0, a1, a2] = values.map(i128::from);
     let (da1, da2) = (a1 - a0, a2 - a0);
-    let (nx, ny) = (da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2);
-    let dx = div_round(nx * scale * 256, area) as i64;
-    let dy = div_round(ny * scale * 256, area) as i64;
+    let (nx, ny) = (mul(da1, ey2) - mul(da2, ey1), mul(da2, ex1) - mul(da1, ex2));
+    let dx = div_round(nx << (scale_bits + 8), area) as i64;
+    let dy = div_round(ny << (scale_bits + 8), area) as i64;
     let (t, a) = if area < 0 {
-        (-(nx * rx + ny * ry), -area)
+        (-(mul(nx, rx) + mul(ny, ry)), -area)
     } else {
-        (nx * rx + ny * ry, area)
+        (mul(nx, rx) + mul(ny, ry), area)
     };
     let (q, r) = (t.div_euclid(a), t.rem_euclid(a));
-    let offset = q.wrapping_mul(scale).wrapping_add(div_round(r * scale, a));
-    let base = ((a0 + i128::from(bias)) * scale).wrapping_add(offset) as i64;
+    let offset = (q << scale_bits).wrapping_add(div_round(r << scale_bits, a));
+    let base = ((a0 + i128::from(bias)) << scale_bits).wrapping_add(offset) as i64;
     Some((base, dx, dy))
+}
+
+/// `a * b` in 128 bits (wrapping). One copy: on 32-bit cores each 128-bit product inlines a
+/// dozen 32 x 32 multiplies (64-bit multiply calls on Cortex-M0), and the exact setups have
+/// ten of them.
+#[inline(never)]
+fn mul(a: i128, b: i128) -> i128 {
+    a.wrapping_mul(b)
 }
 
 /// `numerator / denominator` rounded half up, for any signs. One copy: 128-bit division is long
