@@ -589,25 +589,36 @@ fn numerators_split(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
 }
 
 /// [`Planes`] that remember their last evaluation and reach the next one by additions when it
-/// is near: the start of the next span is usually one row down and a pixel or two across, and
-/// each gradient added is cheaper than the multiplications of a direct evaluation (two 64-bit
-/// multiplies per plane, library calls on Cortex-M0). The result is the direct evaluation's,
-/// bit for bit: both are sums in wrapping 64-bit arithmetic.
+/// is near: the start of the next span is usually one row down and as many columns across as
+/// the left edge steps, and each gradient added is cheaper than the multiplications of a
+/// direct evaluation (two 64-bit multiplies per plane, library calls on Cortex-M0). A move one
+/// row down adds the sum of the last such move, give or take one column: an edge steps the
+/// same columns every row, or one more. The result is the direct evaluation's, bit for bit:
+/// both are sums in wrapping 64-bit arithmetic.
 #[derive(Clone, Debug)]
 pub(crate) struct TrackedPlanes<const N: usize, const SETUP: u32 = 32> {
     pub(crate) planes: Planes<N, SETUP>,
     /// The last point evaluated and its values; at first the reference point and its base.
     last: Cell<(i32, i32, [i64; N])>,
+    /// The last move one row down, in columns, and what it adds to the values: spans start
+    /// where the left edge steps, which moves the same number of columns each row, or one
+    /// more.
+    row_move: Cell<(i32, [i64; N])>,
 }
 
 impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
-    /// Furthest horizontal move reached by additions; further ones multiply.
+    /// Furthest horizontal move along a row reached by additions; further ones multiply.
     const NEAR: i32 = 4;
 
     #[inline(always)]
     pub(crate) fn new(planes: Planes<N, SETUP>) -> Self {
         let last = Cell::new((planes.origin.x, planes.origin.y, planes.base));
-        Self { planes, last }
+        let row_move = Cell::new((0, planes.dy));
+        Self {
+            planes,
+            last,
+            row_move,
+        }
     }
 
     /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].
@@ -616,22 +627,36 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
         let (last_x, last_y, mut values) = self.last.get();
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
-        if (dy == 0 || dy == 1) && (-Self::NEAR..=Self::NEAR).contains(&dx) {
-            let planes = &self.planes;
-            for k in 0..N {
-                let mut value = values[k];
-                if dy == 1 {
-                    value = value.wrapping_add(planes.dy[k]);
+        let planes = &self.planes;
+        if dy == 1 {
+            // One row down: the last such move's sum, give or take a column; a new move
+            // multiplies once per plane.
+            let (columns, mut sum) = self.row_move.get();
+            match dx.wrapping_sub(columns) {
+                0 => {}
+                1 => (0..N).for_each(|k| sum[k] = sum[k].wrapping_add(planes.dx[k])),
+                -1 => (0..N).for_each(|k| sum[k] = sum[k].wrapping_sub(planes.dx[k])),
+                _ => {
+                    let columns = i64::from(dx);
+                    for k in 0..N {
+                        sum[k] = planes.dy[k].wrapping_add(planes.dx[k].wrapping_mul(columns));
+                    }
+                    self.row_move.set((dx, sum));
                 }
+            }
+            for k in 0..N {
+                values[k] = values[k].wrapping_add(sum[k]);
+            }
+        } else if dy == 0 && (-Self::NEAR..=Self::NEAR).contains(&dx) {
+            for k in 0..N {
                 let step = if dx < 0 {
                     planes.dx[k].wrapping_neg()
                 } else {
                     planes.dx[k]
                 };
                 for _ in 0..dx.unsigned_abs() {
-                    value = value.wrapping_add(step);
+                    values[k] = values[k].wrapping_add(step);
                 }
-                values[k] = value;
             }
         } else {
             values = self.planes.at_exact(x, y);
@@ -867,16 +892,21 @@ mod tests {
         ];
         let planes = Planes::<3>::new(v, values, 0, Point::new(0, 0)).unwrap();
         let tracked = TrackedPlanes::new(planes);
-        // Rows down with edge-like steps, restarts, jumps anywhere (a linear congruential walk).
-        let (mut x, mut y, mut seed) = (0i32, 0i32, 12345u64);
+        // Rows down with edge-like steps (the same columns each row, or one more), other moves
+        // down, restarts, jumps anywhere (a linear congruential walk).
+        let (mut x, mut y, mut seed, mut slope) = (0i32, 0i32, 12345u64, 0i32);
         for _ in 0..20_000 {
             seed = seed
                 .wrapping_mul(6_364_136_223_846_793_005)
                 .wrapping_add(1_442_695_040_888_963_407);
             let r = (seed >> 33) as i32;
             match r & 7 {
-                0 => (x, y) = (r >> 3, r >> 12),
+                0 => (x, y, slope) = (r >> 3, r >> 12, (r >> 20) % 40),
                 1 => x = x.wrapping_add(r >> 8),
+                2..=4 => {
+                    x = x.wrapping_add(slope + ((r >> 4) & 1));
+                    y = y.wrapping_add(1);
+                }
                 _ => {
                     x = x.wrapping_add((r >> 3) % 9 - 4 + (r & 16));
                     y = y.wrapping_add(1);
