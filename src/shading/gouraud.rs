@@ -17,11 +17,15 @@ use crate::{
 
 /// Fills a triangle with colours interpolated between its vertices.
 ///
-/// Each channel is interpolated in its colour type's own range with 16 fraction bits, from the
-/// plane through the three vertex colours, and rounded to the nearest value (or dithered, see
-/// [`GouraudStyle::with_dither`]). A triangle whose vertices share a colour is filled with
-/// exactly that colour, and a vertex pixel gets exactly its vertex's colour. Each covered row
-/// goes to the target as one `fill_contiguous` call.
+/// Each channel is interpolated in its colour type's own range, from the plane through the
+/// three vertex colours, and rounded to the nearest value (or dithered, see
+/// [`GouraudStyle::with_dither`]): every channel is within one level of the exact value
+/// rounded. Along a row the channels step with 16 fraction bits, or, for colour types of two to
+/// four channels of at most 6 bits (`Rgb565`, `Rgb555`, `Bgr565`, ...), two to a 32-bit word
+/// with at least 10 fraction bits each, from a start exact to 2^-16 of a level. A triangle
+/// whose vertices share a colour is filled with exactly that colour, and a vertex pixel gets
+/// exactly its vertex's colour. Each covered row goes to the target as one `fill_contiguous`
+/// call.
 ///
 /// # Examples
 ///
@@ -167,6 +171,7 @@ where
         let bias = if self.dither { 0 } else { 1 << 15 };
         let planes = triangle.planes(values, bias, window.top_left)?;
         let painter = GouraudPainter {
+            packed_steps: PackedShader::<C, N>::packed_steps(&planes.step),
             planes: TrackedPlanes::new(planes),
             dither: self.dither,
             color: PhantomData,
@@ -188,6 +193,8 @@ where
 struct GouraudPainter<C, const N: usize> {
     planes: TrackedPlanes<N>,
     dither: bool,
+    /// The steps packed as [`PackedShader`] steps them, when the colour type packs.
+    packed_steps: [u32; 2],
     color: PhantomData<C>,
 }
 
@@ -236,10 +243,12 @@ where
         D: DrawTarget<Color = C>,
     {
         if self.dither {
-            self.paint_dithered(run, offset, target)
+            self.paint_thresholds(run, &BAYER, offset, target)
+        } else if PackedShader::<C, N>::FITS {
+            self.paint_packed(run, offset, target)
         } else {
             shade_span(
-                &GouraudShader::<C, N, false>(&self.planes, PhantomData),
+                &GouraudShader::<C, N, false>(&self.planes, &BAYER, PhantomData),
                 run,
                 offset,
                 target,
@@ -294,13 +303,39 @@ where
         target.fill_contiguous(&stored(run, offset), colors)
     }
 
+    /// Paints `run` with the channels packed two to a word ([`PackedShader`]), in stretches of
+    /// at most [`PACKED_RUN`] pixels, each started from the planes.
+    #[inline(always)]
+    fn paint_packed<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        if run.len <= PACKED_RUN {
+            let shader = PackedShader::<C, N>(&self.planes, self.packed_steps, PhantomData);
+            shade_span(&shader, run, offset, target)
+        } else {
+            // Rare (wider than most displays): in 16.16, with no thresholds, by the dithered
+            // loop, which is out of line anyway.
+            self.paint_thresholds(run, &[[0; 4]; 4], offset, target)
+        }
+    }
+
+    /// Paints `run` channel by channel in 16.16, adding `thresholds` (a 4x4 pattern over
+    /// the screen) before truncating: dithered with [`BAYER`], and the same as rounding to
+    /// nearest with zeros when the planes carry the half-level bias.
     #[inline(never)]
-    fn paint_dithered<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    fn paint_thresholds<D>(
+        &self,
+        run: Span,
+        thresholds: &[[u32; 4]; 4],
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
         shade_span(
-            &GouraudShader::<C, N, true>(&self.planes, PhantomData),
+            &GouraudShader::<C, N, true>(&self.planes, thresholds, PhantomData),
             run,
             offset,
             target,
@@ -311,6 +346,8 @@ where
 /// Colours along a span: channels stepped by additions, rounded to nearest or dithered.
 struct GouraudShader<'a, C, const N: usize, const DITHER: bool>(
     &'a TrackedPlanes<N>,
+    /// The thresholds added when dithering.
+    &'a [[u32; 4]; 4],
     PhantomData<C>,
 );
 
@@ -331,7 +368,7 @@ where
     #[inline(always)]
     fn next(&self, (x, y, values, step): &mut Self::State) -> C {
         let threshold = if DITHER {
-            BAYER[(*y & 3) as usize][(*x & 3) as usize]
+            self.1[(*y & 3) as usize][(*x & 3) as usize]
         } else {
             0
         };
@@ -341,6 +378,109 @@ where
             values[k] = values[k].wrapping_add(step[k]);
         }
         color
+    }
+}
+
+/// Longest stretch a [`PackedShader`] steps before starting again from the planes.
+const PACKED_RUN: u32 = 256;
+
+/// Colours along a span, rounded to nearest, for colour types of two to four channels of at
+/// most 6 bits each (`Rgb565`, `Rgb555`, `Bgr565`, ...): the channels stepped two to a 32-bit
+/// word, each in 16 bits (its level's bits, then fraction bits), so that a pixel costs two
+/// additions instead of one per channel and the steps stay in registers (measured on the
+/// firmware's `big` scene: Cortex-M0 25.9 -> 21.7 instructions per pixel, Cortex-M4F 16.4 ->
+/// 13.7).
+///
+/// A channel of `b` bits keeps `16 - b` fraction bits, at least 10: its start is truncated by
+/// less than 2^-10 of a level and its step rounded to 2^-11, so after at most [`PACKED_RUN`]
+/// pixels it is within 2^-10 + 256 * 2^-11 < 1/7 of a level of the 16.16 value, and the level
+/// within one of the exact one. Inside the triangle a channel plus the half-level rounding
+/// bias lies between 1/2 and its maximum plus 1/2, so it never leaves its 16 bits: a carry or
+/// borrow between the channels of a word cancels out.
+struct PackedShader<'a, C, const N: usize>(&'a TrackedPlanes<N>, [u32; 2], PhantomData<C>);
+
+impl<C, const N: usize> PackedShader<'_, C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    /// Whether the colour type's channels pack: two to four, none over 6 bits.
+    const FITS: bool = {
+        let mut fits = N >= 2 && N <= 4;
+        let mut k = 0;
+        while k < N {
+            fits &= C::MAX_CHANNELS[k] < 64;
+            k += 1;
+        }
+        fits
+    };
+
+    /// Integer bits of channel `k` (1 to 6).
+    #[inline(always)]
+    fn bits(k: usize) -> u32 {
+        (u8::BITS - C::MAX_CHANNELS[k].leading_zeros()).max(1)
+    }
+
+    /// The packed steps of planes stepping by `steps` (raw 16.16), each rounded; once per
+    /// triangle. A negative step in the lower half borrows from the upper one, which adding
+    /// it gives back.
+    #[inline(always)]
+    fn packed_steps(steps: &[u32; N]) -> [u32; 2] {
+        let mut packed = [0u32; 2];
+        if Self::FITS {
+            for k in 0..N {
+                let bits = Self::bits(k);
+                let step = (steps[k] as i32).wrapping_add(1 << (bits - 1)) >> bits;
+                packed[k / 2] = packed[k / 2].wrapping_add((step as u32) << Self::lane_shift(k));
+            }
+        }
+        packed
+    }
+
+    /// Where channel `k`'s 16 bits start in its word: even channels in the upper half.
+    #[inline(always)]
+    fn lane_shift(k: usize) -> u32 {
+        if k & 1 == 0 {
+            16
+        } else {
+            0
+        }
+    }
+}
+
+impl<C, const N: usize> PixelShader for PackedShader<'_, C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    type Color = C;
+    /// The packed channels and their packed steps.
+    type State = ([u32; 2], [u32; 2]);
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        let values = self.0.at(x, y);
+        let mut packed = [0u32; 2];
+        for k in 0..N {
+            let (bits, shift) = (Self::bits(k), Self::lane_shift(k));
+            packed[k / 2] |= ((values[k] >> bits) & 0xFFFF) << shift;
+        }
+        (packed, self.1)
+    }
+
+    #[inline(always)]
+    fn next(&self, (packed, steps): &mut Self::State) -> C {
+        let channels = core::array::from_fn(|k| {
+            let (bits, word) = (Self::bits(k), packed[k / 2]);
+            let level = if k & 1 == 0 {
+                word >> (32 - bits)
+            } else {
+                (word >> (16 - bits)) & ((1 << bits) - 1)
+            };
+            level as u8
+        });
+        for w in 0..2 {
+            packed[w] = packed[w].wrapping_add(steps[w]);
+        }
+        C::from_channels(channels)
     }
 }
 
