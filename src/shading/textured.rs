@@ -412,7 +412,8 @@ where
             (i64::from(channels[k]) * 65536 + m / 2) / m
         })
     });
-    triangle.planes_in(values, 0, window)
+    // From the first vertex when the triangle is small, as Gouraud colours.
+    triangle.planes(values, 0, window.top_left)
 }
 
 /// The painter of a textured triangle, one type for every filter, wrap, modulation and
