@@ -194,7 +194,7 @@ struct GouraudPainter<C, const N: usize> {
     planes: TrackedPlanes<N>,
     dither: bool,
     /// The steps packed as [`PackedShader`] steps them, when the colour type packs.
-    packed_steps: [u32; 2],
+    packed_steps: Lanes,
     color: PhantomData<C>,
 }
 
@@ -384,20 +384,77 @@ where
 /// Longest stretch a [`PackedShader`] steps before starting again from the planes.
 const PACKED_RUN: u32 = 256;
 
+/// Up to four 16-bit lanes stepped together: two 32-bit words on 32-bit cores, one 64-bit word
+/// on 64-bit ones (two words there became one emulated with masks, twice the instructions per
+/// pixel on x86-64). Lane `k` holds the same value either way: a carry or borrow between lanes
+/// cancels out as long as each lane's value stays within its 16 bits.
+/// Up to four 16-bit lanes stepped together, two to a 32-bit word: lanes 0 and 1 in the first
+/// word (lane 0 in the upper half), 2 and 3 in the second. A carry or borrow between the two
+/// lanes of a word cancels out as long as each lane's value stays within its 16 bits. Two
+/// fields, not an array: an array of two words became one 64-bit word on x86-64, stepped with
+/// masks at twice the instructions per pixel.
+#[derive(Copy, Clone, Debug, Default)]
+struct Lanes(u32, u32);
+
+impl Lanes {
+    /// The word holding lane `k`.
+    #[inline(always)]
+    fn word(&mut self, k: usize) -> &mut u32 {
+        if k < 2 {
+            &mut self.0
+        } else {
+            &mut self.1
+        }
+    }
+
+    /// Where lane `k` starts in its word.
+    #[inline(always)]
+    fn position(k: usize) -> u32 {
+        if k & 1 == 0 {
+            16
+        } else {
+            0
+        }
+    }
+
+    /// Adds `value` (signed) at lane `k`: a negative one in a lower half borrows from the
+    /// upper one, which adding the lanes' values gives back.
+    #[inline(always)]
+    fn add(&mut self, k: usize, value: i32) {
+        let at = Self::position(k);
+        let word = self.word(k);
+        *word = word.wrapping_add((value as u32) << at);
+    }
+
+    /// The top `bits` bits of lane `k`.
+    #[inline(always)]
+    fn top(self, k: usize, bits: u32) -> u32 {
+        let at = Self::position(k) + 16 - bits;
+        let word = if k < 2 { self.0 } else { self.1 };
+        (word >> at) & ((1 << bits) - 1)
+    }
+
+    /// Every lane moved by `steps`' lanes.
+    #[inline(always)]
+    fn step(&mut self, steps: Self) {
+        self.0 = self.0.wrapping_add(steps.0);
+        self.1 = self.1.wrapping_add(steps.1);
+    }
+}
+
 /// Colours along a span, rounded to nearest, for colour types of two to four channels of at
-/// most 6 bits each (`Rgb565`, `Rgb555`, `Bgr565`, ...): the channels stepped two to a 32-bit
-/// word, each in 16 bits (its level's bits, then fraction bits), so that a pixel costs two
-/// additions instead of one per channel and the steps stay in registers (measured on the
-/// firmware's `big` scene: Cortex-M0 25.9 -> 21.7 instructions per pixel, Cortex-M4F 16.4 ->
-/// 13.7).
+/// most 6 bits each (`Rgb565`, `Rgb555`, `Bgr565`, ...): the channels stepped together in
+/// 16-bit [`Lanes`] (a channel's level bits, then fraction bits), so that a pixel costs one
+/// or two additions instead of one per channel and the steps stay in registers (measured on
+/// the firmware's `big` scene: Cortex-M0 25.9 -> 21.7 instructions per pixel, Cortex-M4F 16.4
+/// -> 13.7).
 ///
 /// A channel of `b` bits keeps `16 - b` fraction bits, at least 10: its start is truncated by
 /// less than 2^-10 of a level and its step rounded to 2^-11, so after at most [`PACKED_RUN`]
 /// pixels it is within 2^-10 + 256 * 2^-11 < 1/7 of a level of the 16.16 value, and the level
 /// within one of the exact one. Inside the triangle a channel plus the half-level rounding
-/// bias lies between 1/2 and its maximum plus 1/2, so it never leaves its 16 bits: a carry or
-/// borrow between the channels of a word cancels out.
-struct PackedShader<'a, C, const N: usize>(&'a TrackedPlanes<N>, [u32; 2], PhantomData<C>);
+/// bias lies between 1/2 and its maximum plus 1/2, so it never leaves its 16 bits.
+struct PackedShader<'a, C, const N: usize>(&'a TrackedPlanes<N>, Lanes, PhantomData<C>);
 
 impl<C, const N: usize> PackedShader<'_, C, N>
 where
@@ -420,30 +477,18 @@ where
         (u8::BITS - C::MAX_CHANNELS[k].leading_zeros()).max(1)
     }
 
-    /// The packed steps of planes stepping by `steps` (raw 16.16), each rounded; once per
-    /// triangle. A negative step in the lower half borrows from the upper one, which adding
-    /// it gives back.
+    /// The lane steps of planes stepping by `steps` (raw 16.16), each rounded; once per
+    /// triangle.
     #[inline(always)]
-    fn packed_steps(steps: &[u32; N]) -> [u32; 2] {
-        let mut packed = [0u32; 2];
+    fn packed_steps(steps: &[u32; N]) -> Lanes {
+        let mut packed = Lanes::default();
         if Self::FITS {
             for k in 0..N {
                 let bits = Self::bits(k);
-                let step = (steps[k] as i32).wrapping_add(1 << (bits - 1)) >> bits;
-                packed[k / 2] = packed[k / 2].wrapping_add((step as u32) << Self::lane_shift(k));
+                packed.add(k, (steps[k] as i32).wrapping_add(1 << (bits - 1)) >> bits);
             }
         }
         packed
-    }
-
-    /// Where channel `k`'s 16 bits start in its word: even channels in the upper half.
-    #[inline(always)]
-    fn lane_shift(k: usize) -> u32 {
-        if k & 1 == 0 {
-            16
-        } else {
-            0
-        }
     }
 }
 
@@ -452,34 +497,23 @@ where
     C: ChannelColor<Channels = [u8; N]>,
 {
     type Color = C;
-    /// The packed channels and their packed steps.
-    type State = ([u32; 2], [u32; 2]);
+    /// The channels and their steps.
+    type State = (Lanes, Lanes);
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
         let values = self.0.at(x, y);
-        let mut packed = [0u32; 2];
+        let mut packed = Lanes::default();
         for k in 0..N {
-            let (bits, shift) = (Self::bits(k), Self::lane_shift(k));
-            packed[k / 2] |= ((values[k] >> bits) & 0xFFFF) << shift;
+            packed.add(k, ((values[k] >> Self::bits(k)) & 0xFFFF) as i32);
         }
         (packed, self.1)
     }
 
     #[inline(always)]
     fn next(&self, (packed, steps): &mut Self::State) -> C {
-        let channels = core::array::from_fn(|k| {
-            let (bits, word) = (Self::bits(k), packed[k / 2]);
-            let level = if k & 1 == 0 {
-                word >> (32 - bits)
-            } else {
-                (word >> (16 - bits)) & ((1 << bits) - 1)
-            };
-            level as u8
-        });
-        for w in 0..2 {
-            packed[w] = packed[w].wrapping_add(steps[w]);
-        }
+        let channels = core::array::from_fn(|k| packed.top(k, Self::bits(k)) as u8);
+        packed.step(*steps);
         C::from_channels(channels)
     }
 }
