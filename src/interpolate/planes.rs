@@ -598,12 +598,15 @@ fn numerators_split(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
 #[derive(Clone, Debug)]
 pub(crate) struct TrackedPlanes<const N: usize, const SETUP: u32 = 32> {
     pub(crate) planes: Planes<N, SETUP>,
-    /// The last point evaluated and its values; at first the reference point and its base.
-    last: Cell<(i32, i32, [i64; N])>,
-    /// The last move one row down, in columns, and what it adds to the values: spans start
-    /// where the left edge steps, which moves the same number of columns each row, or one
-    /// more.
-    row_move: Cell<(i32, [i64; N])>,
+    /// The last point evaluated; at first the reference point.
+    last: Cell<(i32, i32)>,
+    /// The values there, each updated in place.
+    values: [Cell<i64>; N],
+    /// The last move one row down, in columns: spans start where the left edge steps, which
+    /// moves the same number of columns each row, or one more.
+    row_move: Cell<i32>,
+    /// What that move adds to each value.
+    row_sum: [Cell<i64>; N],
 }
 
 impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
@@ -612,40 +615,44 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
 
     #[inline(always)]
     pub(crate) fn new(planes: Planes<N, SETUP>) -> Self {
-        let last = Cell::new((planes.origin.x, planes.origin.y, planes.base));
-        let row_move = Cell::new((0, planes.dy));
         Self {
+            last: Cell::new((planes.origin.x, planes.origin.y)),
+            values: planes.base.map(Cell::new),
+            row_move: Cell::new(0),
+            row_sum: planes.dy.map(Cell::new),
             planes,
-            last,
-            row_move,
         }
     }
 
-    /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].
-    /// Out of line: once per span, and one copy serves every loop that starts spans.
+    /// Moves the tracked values to pixel `(x, y)`. Out of line: once per span, and one copy
+    /// serves every loop that starts spans; in place, so that a span's start costs a few
+    /// loads, additions and stores per value.
     #[inline(never)]
-    pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
-        let (last_x, last_y, mut values) = self.last.get();
+    fn track(&self, x: i32, y: i32) {
+        let (last_x, last_y) = self.last.get();
+        self.last.set((x, y));
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
         let planes = &self.planes;
+        let add = |cell: &Cell<i64>, value: i64| cell.set(cell.get().wrapping_add(value));
         if dy == 1 {
             // One row down: the last such move's sum, give or take a column; a new move
             // multiplies once per plane.
-            let (columns, mut sum) = self.row_move.get();
-            match dx.wrapping_sub(columns) {
-                0 => {}
-                1 => (0..N).for_each(|k| sum[k] = sum[k].wrapping_add(planes.dx[k])),
-                -1 => (0..N).for_each(|k| sum[k] = sum[k].wrapping_sub(planes.dx[k])),
+            let sum = |k: usize| self.row_sum[k].get();
+            match dx.wrapping_sub(self.row_move.get()) {
+                0 => (0..N).for_each(|k| add(&self.values[k], sum(k))),
+                1 => (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_add(planes.dx[k]))),
+                -1 => {
+                    (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_sub(planes.dx[k])));
+                }
                 _ => {
                     let columns = i64::from(dx);
                     for k in 0..N {
-                        sum[k] = planes.dy[k].wrapping_add(planes.dx[k].wrapping_mul(columns));
+                        let sum = planes.dy[k].wrapping_add(planes.dx[k].wrapping_mul(columns));
+                        self.row_sum[k].set(sum);
+                        add(&self.values[k], sum);
                     }
-                    self.row_move.set((dx, sum));
+                    self.row_move.set(dx);
                 }
-            }
-            for k in 0..N {
-                values[k] = values[k].wrapping_add(sum[k]);
             }
         } else if dy == 0 && (-Self::NEAR..=Self::NEAR).contains(&dx) {
             for k in 0..N {
@@ -655,14 +662,20 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                     planes.dx[k]
                 };
                 for _ in 0..dx.unsigned_abs() {
-                    values[k] = values[k].wrapping_add(step);
+                    add(&self.values[k], step);
                 }
             }
         } else {
-            values = self.planes.at_exact(x, y);
+            let values = self.planes.at_exact(x, y);
+            (0..N).for_each(|k| self.values[k].set(values[k]));
         }
-        self.last.set((x, y, values));
-        values
+    }
+
+    /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].
+    #[inline(always)]
+    pub(crate) fn at_exact(&self, x: i32, y: i32) -> [i64; N] {
+        self.track(x, y);
+        core::array::from_fn(|k| self.values[k].get())
     }
 
     /// All values at pixel `(x, y)`, raw 16.16 (bias included): [`Planes::at`].
