@@ -22,7 +22,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::Span;
 use crate::geometry::Triangle;
-use crate::setup::Lane;
+use crate::setup::{lane::floor_div_rem_i128, Lane};
 
 /// Fraction bits of positions.
 const FRAC: u32 = 12;
@@ -151,10 +151,8 @@ fn start_crossing(down: i64, dx: i64, dy: i64) -> (i64, i64) {
         let numerator = i128::from(down) * i128::from(dx);
         let dy = i128::from(dy);
         // The quotient is at most |dx| and the remainder below dy: both fit.
-        (
-            numerator.div_euclid(dy) as i64,
-            numerator.rem_euclid(dy) as i64,
-        )
+        let (quotient, remainder) = floor_div_rem_i128(numerator, dy);
+        (quotient as i64, remainder as i64)
     }
 }
 

@@ -11,7 +11,10 @@
 use embedded_graphics::primitives::Rectangle;
 
 use super::{edge::Rounding, FillRule, Span, SpanSink};
-use crate::{geometry::SubPixelTriangle, setup::Lane};
+use crate::{
+    geometry::SubPixelTriangle,
+    setup::{lane::floor_div_rem_i128, Lane},
+};
 
 /// One sub-pixel unit per pixel.
 const UNIT: i64 = 256;
@@ -142,7 +145,8 @@ fn start_bound_wide(
         + i128::from(bias);
     let d = i128::from(divisor);
     // A pixel bound within the 24-bit range, a remainder below D: both fit.
-    (whole + k.div_euclid(d) as i64, (k.rem_euclid(d) - d) as i64)
+    let (quotient, remainder) = floor_div_rem_i128(k, d);
+    (whole + quotient as i64, (remainder - d) as i64)
 }
 
 /// Deltas below which an edge's start fits 32 bits.

@@ -5,7 +5,7 @@ use core::cell::Cell;
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 use super::perspective::{mul_u32, reciprocal};
-use crate::setup::lane::div_rem_u64;
+use crate::setup::lane::{div_rem_u64, floor_div_rem_i128};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -751,7 +751,7 @@ fn exact_plane_subpixel(
     } else {
         (mul(nx, rx) + mul(ny, ry), area)
     };
-    let (q, r) = (t.div_euclid(a), t.rem_euclid(a));
+    let (q, r) = floor_div_rem_i128(t, a);
     let offset = (q << scale_bits).wrapping_add(div_round(r << scale_bits, a));
     let base = ((a0 + i128::from(bias)) << scale_bits).wrapping_add(offset) as i64;
     Some((base, dx, dy))
@@ -765,8 +765,8 @@ fn mul(a: i128, b: i128) -> i128 {
     a.wrapping_mul(b)
 }
 
-/// `numerator / denominator` rounded half up, for any signs. One copy: 128-bit division is long
-/// code on 32-bit cores.
+/// `numerator / denominator` rounded half up, for any signs. Out of line: one copy of the
+/// sign handling.
 #[inline(never)]
 fn div_round(numerator: i128, denominator: i128) -> i128 {
     let (n, d) = if denominator < 0 {
@@ -774,48 +774,8 @@ fn div_round(numerator: i128, denominator: i128) -> i128 {
     } else {
         (numerator, denominator)
     };
-    // floor((2n + d) / 2d). `d` is never zero (areas are checked first); `checked_` proves it
-    // without a panic.
-    let (t, d) = (2 * n + d, 2 * d);
-    if cfg!(target_pointer_width = "64") {
-        t.checked_div_euclid(d).unwrap_or(0)
-    } else {
-        floor_div_bitwise(t, d)
-    }
-}
-
-/// `floor(t / d)` for `d > 0`, by [`div_rem_u128_bitwise`].
-#[inline(always)]
-fn floor_div_bitwise(t: i128, d: i128) -> i128 {
-    let (q, r) = div_rem_u128_bitwise(t.unsigned_abs(), d.unsigned_abs());
-    if t < 0 {
-        // floor(-m / d) = -ceil(m / d)
-        (q + u128::from(r != 0)).wrapping_neg() as i128
-    } else {
-        q as i128
-    }
-}
-
-/// `(n / d, n % d)` for `d > 0` by shift and subtract, one step per quotient bit (about 50 in a
-/// plane setup), on 32-bit cores: there the library's 128-bit division inlines 1.2 to 1.3 KB
-/// of code, and measured slower on Cortex-M0 (about 4,000 instructions, twice this) and even
-/// on Cortex-M4F, which divides 32 bits in hardware. 64-bit hosts keep the library's.
-#[inline(always)]
-fn div_rem_u128_bitwise(n: u128, d: u128) -> (u128, u128) {
-    if n < d || d == 0 {
-        return (0, n);
-    }
-    let shift = d.leading_zeros() - n.leading_zeros();
-    let (mut divisor, mut quotient, mut rest) = (d << shift, 0u128, n);
-    for _ in 0..=shift {
-        quotient <<= 1;
-        if rest >= divisor {
-            rest -= divisor;
-            quotient |= 1;
-        }
-        divisor >>= 1;
-    }
-    (quotient, rest)
+    // floor((2n + d) / 2d); `d` is never zero (areas are checked first).
+    floor_div_rem_i128(2 * n + d, 2 * d).0
 }
 
 #[cfg(test)]
@@ -1110,36 +1070,6 @@ mod tests {
                     "{numerator} {reciprocal} {negative} {shift}"
                 );
             }
-        }
-    }
-
-    #[test]
-    fn bitwise_division_is_the_128_bit_one() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
-        for _ in 0..100_000 {
-            let mut wide = || {
-                let (high, low, shift) = (next(), next(), next() % 127);
-                (i128::from(high) << 64 | i128::from(low)) >> shift
-            };
-            let (t, d) = (wide(), (wide() & i128::MAX).max(1));
-            let t = if t & 1 == 0 { t } else { t.wrapping_neg() };
-            assert_eq!(floor_div_bitwise(t, d), t.div_euclid(d), "{t} / {d}");
-        }
-        for (t, d) in [
-            (0, 1),
-            (-1, 1),
-            (-1, 2),
-            (i128::MAX, 1),
-            (i128::MIN + 1, 3),
-            (7, 7),
-        ] {
-            assert_eq!(floor_div_bitwise(t, d), t.div_euclid(d), "{t} / {d}");
         }
     }
 
