@@ -202,9 +202,15 @@ where
                     else {
                         return;
                     };
-                    for dst in row {
-                        let Some(color) = colors.next() else { return };
-                        *dst = S::store(color);
+                    let mut written = 0;
+                    row.iter_mut()
+                        .zip(colors.by_ref())
+                        .for_each(|(dst, color)| {
+                            *dst = S::store(color);
+                            written += 1;
+                        });
+                    if written < row.len() {
+                        return;
                     }
                 }
             }
