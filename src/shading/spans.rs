@@ -24,11 +24,30 @@ pub(crate) trait PixelShader {
     const BUFFERED: bool = false;
 }
 
+/// A borrowed shader shades as the shader does.
+impl<T: PixelShader + ?Sized> PixelShader for &T {
+    type Color = T::Color;
+    type State = T::State;
+    const BUFFERED: bool = T::BUFFERED;
+
+    #[inline(always)]
+    fn start(&self, x: i32, y: i32) -> Self::State {
+        (**self).start(x, y)
+    }
+
+    #[inline(always)]
+    fn next(&self, state: &mut Self::State) -> Self::Color {
+        (**self).next(state)
+    }
+}
+
 /// Shades one span with `shader` into `target`, whose pixel `(x, y)` is the screen's
-/// `(x, y) + offset` (see [`stored`]).
+/// `(x, y) + offset` (see [`stored`]). The shader is taken by value, so that the colours'
+/// iterator owns it: borrowed, it had to be stored to memory for every span, even where the
+/// span loop keeps what it reads in registers.
 #[inline(always)]
 pub(crate) fn shade_span<D, S>(
-    shader: &S,
+    shader: S,
     span: Span,
     offset: Point,
     target: &mut D,
