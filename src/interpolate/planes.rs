@@ -79,7 +79,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         let (vertices, values) = if window.contains(vertices[0]) {
             (vertices, values)
         } else {
-            match rotate_into(vertices, values, window) {
+            match rotate_into(vertices, values, |p| window.contains(p)) {
                 Some(rotated) => rotated,
                 None => return Self::new_exact(vertices, values, bias, window.top_left),
             }
@@ -121,11 +121,20 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         window: &Rectangle,
     ) -> Option<Self> {
+        // From a vertex whose pixel lies in the window, as `new_in`.
+        let pixel = |(x, y): (i32, i32)| Point::new(x >> 8, y >> 8);
+        let (vertices, values) = if window.contains(pixel(vertices[0])) {
+            (vertices, values)
+        } else {
+            match rotate_into(vertices, values, |v| window.contains(pixel(v))) {
+                Some(rotated) => rotated,
+                None => return Self::new_exact_subpixel(vertices, values, bias, window.top_left),
+            }
+        };
         let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
         let small = e.iter().all(|d| d.unsigned_abs() < 1 << 15);
-        let pixel = Point::new(vertices[0].0 >> 8, vertices[0].1 >> 8);
-        if small && window.contains(pixel) {
+        if small {
             Self::new_small_subpixel(p0, values, bias, e)
         } else {
             Self::new_exact_subpixel(vertices, values, bias, window.top_left)
@@ -321,15 +330,15 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 }
 
 /// The vertices and their values taken in turn from the second or third vertex, whichever
-/// first lies in `window`; `None` when neither does. Out of line: only triangles crossing the
-/// window's edges come here.
+/// first is `inside` (the window); `None` when neither is. Out of line: only triangles
+/// crossing the window's edges come here.
 #[inline(never)]
-fn rotate_into<const N: usize>(
-    vertices: [Point; 3],
+fn rotate_into<V: Copy, const N: usize>(
+    vertices: [V; 3],
     values: [[i64; N]; 3],
-    window: &Rectangle,
-) -> Option<([Point; 3], [[i64; N]; 3])> {
-    let first = (1..3).find(|&k| window.contains(vertices[k]))?;
+    inside: impl Fn(V) -> bool,
+) -> Option<([V; 3], [[i64; N]; 3])> {
+    let first = (1..3).find(|&k| inside(vertices[k]))?;
     let turn = |k: usize| (first + k) % 3;
     Some((
         [0, 1, 2].map(|k| vertices[turn(k)]),
@@ -892,6 +901,26 @@ mod tests {
             let at = planes.at_exact(reference.x, reference.y);
             for k in 0..2 {
                 assert_eq!(at[k], (values[inside][k] + 3) << 30, "{v:?}");
+                assert_eq!(planes.dx[k], from_first.dx[k], "{v:?}");
+                assert_eq!(planes.dy[k], from_first.dy[k], "{v:?}");
+            }
+            // The same in 1/256 pixel, a fraction off each whole pixel: the plane at the
+            // vertex inside within a few units of 2^-46, the gradients those from the first
+            // vertex.
+            let raw = v.map(|(x, y)| (x * 256 + 37, y * 256 + 201));
+            let from_first = Planes::<2, 46>::new_subpixel(raw, values, 3, Point::zero()).unwrap();
+            let planes = Planes::<2, 46>::new_subpixel_in(raw, values, 3, &window).unwrap();
+            let at = planes.at_exact(reference.x, reference.y);
+            // The vertex's pixel is 37/256 left of it and 201/256 up.
+            for k in 0..2 {
+                let exact = i128::from((values[inside][k] + 3) << 30)
+                    - (i128::from(from_first.dx[k]) * 37 + i128::from(from_first.dy[k]) * 201)
+                        / 256;
+                assert!(
+                    (i128::from(at[k]) - exact).abs() <= 16,
+                    "{v:?}: {} {exact}",
+                    at[k]
+                );
                 assert_eq!(planes.dx[k], from_first.dx[k], "{v:?}");
                 assert_eq!(planes.dy[k], from_first.dy[k], "{v:?}");
             }
