@@ -335,7 +335,7 @@ where
         D: DrawTarget<Color = C>,
     {
         shade_span(
-            &GouraudShader::<C, N, true>(&self.planes, thresholds, PhantomData),
+            GouraudShader::<C, N, true>(&self.planes, thresholds, PhantomData),
             run,
             offset,
             target,
