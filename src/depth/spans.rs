@@ -156,11 +156,19 @@ where
 /// The smallest of `stored ^ flip`: the best depth there when `flip` maps the test to "less".
 #[inline(always)]
 fn nearest_stored(stored: &[u16], flip: u16) -> u16 {
-    // In 32 bits: 16-bit arithmetic cost two zero-extensions a pixel on Cortex-M0.
-    let flip = u32::from(flip);
-    stored.iter().fold(u32::from(u16::MAX), |best, &old| {
-        best.min(u32::from(old) ^ flip)
-    }) as u16
+    // `flip` is 0 or all ones (`DepthTest::comparison`): the smallest stored depth, or the
+    // complement of the largest. One comparison a pixel, in 32 bits; with the flip inside
+    // the loop, Cortex-M0 reloaded it and zero-extended each result.
+    debug_assert!(flip == 0 || flip == u16::MAX);
+    if flip == 0 {
+        let smallest = stored
+            .iter()
+            .fold(u32::from(u16::MAX), |best, &old| best.min(u32::from(old)));
+        smallest as u16
+    } else {
+        let largest = stored.iter().fold(0, |best, &old| best.max(u32::from(old)));
+        u16::MAX - largest as u16
+    }
 }
 
 /// Stores the depths of a span, `start` stepping by `step` (16.16), rounded down.
