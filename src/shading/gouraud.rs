@@ -384,10 +384,6 @@ where
 /// Longest stretch a [`PackedShader`] steps before starting again from the planes.
 const PACKED_RUN: u32 = 256;
 
-/// Up to four 16-bit lanes stepped together: two 32-bit words on 32-bit cores, one 64-bit word
-/// on 64-bit ones (two words there became one emulated with masks, twice the instructions per
-/// pixel on x86-64). Lane `k` holds the same value either way: a carry or borrow between lanes
-/// cancels out as long as each lane's value stays within its 16 bits.
 /// Up to four 16-bit lanes stepped together, two to a 32-bit word: lanes 0 and 1 in the first
 /// word (lane 0 in the upper half), 2 and 3 in the second. A carry or borrow between the two
 /// lanes of a word cancels out as long as each lane's value stays within its 16 bits. Two
@@ -428,10 +424,9 @@ impl Lanes {
 
     /// The top `bits` bits of lane `k`.
     #[inline(always)]
-    fn top(self, k: usize, bits: u32) -> u32 {
+    fn top(mut self, k: usize, bits: u32) -> u32 {
         let at = Self::position(k) + 16 - bits;
-        let word = if k < 2 { self.0 } else { self.1 };
-        (word >> at) & ((1 << bits) - 1)
+        (*self.word(k) >> at) & ((1 << bits) - 1)
     }
 
     /// Every lane moved by `steps`' lanes.
