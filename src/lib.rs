@@ -85,3 +85,20 @@ pub use target::{Framebuffer, StoredPixel};
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
+
+#[cfg(test)]
+mod test_rng {
+    /// Xorshift64 (shifts 13, 7, 17): the unit tests' random inputs, the same sequence from a
+    /// seed on every run.
+    pub(crate) struct XorShift(pub(crate) u64);
+
+    impl XorShift {
+        /// The next value (the seed must not be zero).
+        pub(crate) fn next_u64(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+    }
+}

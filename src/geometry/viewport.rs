@@ -371,13 +371,8 @@ mod tests {
     #[allow(clippy::many_single_char_names)]
     fn clip_coordinates_divide_exactly() {
         let vp = Viewport::new(Rectangle::new(Point::new(-7, 3), Size::new(320, 240)));
-        let mut seed = 0x1234_5678_9ABC_DEF0u64;
-        let mut next = |range: i32| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % (2 * range as u64 + 1)) as i32 - range
-        };
+        let mut rng = crate::test_rng::XorShift(0x1234_5678_9ABC_DEF0);
+        let mut next = |range: i32| (rng.next_u64() % (2 * range as u64 + 1)) as i32 - range;
         for _ in 0..10_000 {
             let [x, y, z] = [(); 3].map(|()| I16F16::from_bits(next(1 << 17)));
             // w = 1: exactly the NDC mapping.

@@ -631,13 +631,8 @@ mod tests {
     fn attributes_are_within_1_256_texel() {
         use crate::Triangle;
         use embedded_graphics::geometry::{Point, Size};
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = |range: i64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % range as u64) as i64
-        };
+        let mut rng = crate::test_rng::XorShift(0x2545_F491_4F6C_DD1D);
+        let mut next = |range: i64| (rng.next_u64() % range as u64) as i64;
         let window = Rectangle::new(Point::new(0, 0), Size::new(320, 240));
         let mut checked = 0;
         while checked < 20_000 {

@@ -1089,12 +1089,9 @@ mod tests {
         for d in 1..=70_000 {
             check(d);
         }
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
         for _ in 0..100_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            check(1 + x % ((1 << 31) - 1));
+            check(1 + rng.next_u64() % ((1 << 31) - 1));
         }
         for d in [
             (1 << 16) - 1,
@@ -1138,13 +1135,8 @@ mod tests {
     fn split_scaling_is_the_128_bit_one() {
         // Numerators below 2^62 in magnitude (multiples of 2^16 and not), reciprocals below
         // 2^62, shifts of every setup precision.
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut rng = crate::test_rng::XorShift(0x2545_F491_4F6C_DD1D);
+        let mut next = || rng.next_u64();
         for _ in 0..200_000 {
             let bits = next() % 62;
             let mut numerator = (next() >> (64 - bits).min(63)) as i64;

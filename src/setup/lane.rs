@@ -296,28 +296,24 @@ pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
 mod tests {
     use super::*;
 
+    /// The 32-bit cores' division, checked on the host as well: the unsigned shift and
+    /// subtract against the library's division, and the floor division built on it against
+    /// `div_euclid` and `rem_euclid`, for both signs of every numerator.
     #[test]
     fn bitwise_division_is_the_128_bit_one() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
         let check = |n: i128, d: i128| {
-            let (q, r) = div_rem_u128_bitwise(n.unsigned_abs(), d.unsigned_abs());
-            let m = n.unsigned_abs();
-            assert_eq!(
-                (q, r),
-                (m / d.unsigned_abs(), m % d.unsigned_abs()),
-                "{n} / {d}"
-            );
+            let (m, e) = (n.unsigned_abs(), d.unsigned_abs());
+            assert_eq!(div_rem_u128_bitwise(m, e), (m / e, m % e), "{m} / {e}");
+            for n in [n, n.wrapping_neg()] {
+                let want = (n.div_euclid(d), n.rem_euclid(d));
+                assert_eq!(floor_div_rem_bitwise(n, d), want, "{n} / {d}");
+            }
         };
+        let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
         for _ in 0..100_000 {
             let mut wide = || {
-                let (high, low, shift) = (next(), next(), next() % 127);
-                (i128::from(high) << 64 | i128::from(low)) >> shift
+                let (high, low) = (rng.next_u64(), rng.next_u64());
+                (i128::from(high) << 64 | i128::from(low)) >> (rng.next_u64() % 127)
             };
             let (n, d) = (wide(), (wide() & i128::MAX).max(1));
             check(n, d);
@@ -326,45 +322,14 @@ mod tests {
             (0, 1),
             (-1, 1),
             (-1, 2),
+            (7, 2),
+            (-8, 2),
+            (7, 7),
+            (-1, 1 << 100),
             (i128::MAX, 1),
             (i128::MIN, 3),
-            (7, 7),
         ] {
             check(n, d);
-        }
-    }
-
-    /// The 32-bit cores' floor division, checked on the host as well.
-    #[test]
-    fn floor_division_is_euclidean() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
-        for _ in 0..100_000 {
-            let mut wide = || {
-                let (high, low, shift) = (next(), next(), next() % 127);
-                (i128::from(high) << 64 | i128::from(low)) >> shift
-            };
-            let (n, d) = (wide(), (wide() & i128::MAX).max(1));
-            for n in [n, n.wrapping_neg()] {
-                let want = (n.div_euclid(d), n.rem_euclid(d));
-                assert_eq!(floor_div_rem_bitwise(n, d), want, "{n} / {d}");
-            }
-        }
-        for (n, d) in [
-            (7i128, 2i128),
-            (-7, 2),
-            (-8, 2),
-            (0, 5),
-            (-1, 1 << 100),
-            (i128::MIN, 3),
-        ] {
-            let want = (n.div_euclid(d), n.rem_euclid(d));
-            assert_eq!(floor_div_rem_bitwise(n, d), want, "{n} / {d}");
         }
     }
 

@@ -317,13 +317,8 @@ mod tests {
 
     #[test]
     fn rgb565_word_blend_equals_channel_blend() {
-        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
+        let mut next = || rng.next_u64();
         for _ in 0..20_000 {
             let corners: [Rgb565; 4] = core::array::from_fn(|_| {
                 let r = next();
