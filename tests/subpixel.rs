@@ -174,6 +174,52 @@ fn ends_of_the_range() {
     }
 }
 
+/// Triangles at the edges of the 32-bit walk (coordinates near ±2^30 units, heights near 2^23
+/// units) and past them (up to the ends of the range), where the 64-bit walk takes over:
+/// exact either way.
+#[test]
+fn limits_of_the_narrow_walk() {
+    let edge: i32 = 1 << 30;
+    let span: i32 = 1 << 23;
+    let corners = [
+        edge - 1,
+        edge,
+        edge + 1,
+        -edge,
+        -edge - 1,
+        -edge + 1,
+        i32::MAX,
+        i32::MAX - 200,
+        i32::MIN,
+        i32::MIN + 200,
+    ];
+    for corner in corners {
+        for size in [span - 1, span, span + 1, 300] {
+            for (sx, sy) in [(1i32, 1i32), (-1, 1), (1, -1), (-1, -1)] {
+                let a = (corner.saturating_sub(sx * 77), corner);
+                let b = (
+                    corner.saturating_sub(sx * size),
+                    corner.saturating_sub(sy * 41),
+                );
+                let c = (
+                    corner.saturating_sub(sx * 97),
+                    corner.saturating_sub(sy * size),
+                );
+                for vertex in [a, b, c] {
+                    // Samples scaled by 256 must fit i32.
+                    let near = |v: i32| (v >> 8).clamp(-(1 << 23) + 20, (1 << 23) - 20);
+                    let (px, py) = (near(vertex.0), near(vertex.1));
+                    let window = Rectangle::new(Point::new(px - 20, py - 20), Size::new(40, 40));
+                    for rule in [Rule::TopLeft, Rule::Inclusive] {
+                        check([a, b, c], rule, window).unwrap();
+                        check([c, b, a], rule, window).unwrap();
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// A mesh of sub-pixel triangles sharing vertices covers every pixel of its area once.
 #[test]
 fn meshes_are_watertight() {

@@ -20,8 +20,8 @@ use crate::{
 const UNIT: i64 = 256;
 
 /// An edge walked one row at a time: pixel bound, error term and increments, in lane `T`
-/// (32-bit for triangles under 2^23 units (32,768 pixels) across, which every value of the
-/// walk then fits; 64-bit beyond).
+/// (32-bit for triangles whose every value of the walk fits it, see [`walk_subpixel`]; 64-bit
+/// beyond).
 #[derive(Copy, Clone, Debug)]
 struct SubEdge<T> {
     /// The pixel bound on the current row.
@@ -41,29 +41,30 @@ impl<T: Lane> SubEdge<T> {
     /// whose samples lie at or below `upper`. Out of line: one copy per lane serves every
     /// style and target.
     #[inline(never)]
-    fn start(upper: (i64, i64), lower: (i64, i64), rounding: Rounding, row: i64) -> Self {
+    fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T) -> Self {
         let (dx, dy) = (lower.0 - upper.0, lower.1 - upper.1);
-        let divisor = UNIT * dy;
+        let divisor = dy << 8;
         let bias = match rounding {
-            Rounding::Ceil => divisor - 1,
+            Rounding::Ceil => divisor - T::ONE,
             Rounding::FloorPlusOne => divisor,
         };
         let (x, error) = start_bound(upper, (dx, dy), bias, row);
         // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
-        let (step, rest) = if dx < 0 && dx >= -dy {
-            (-1, dx + dy)
-        } else if dx >= 0 && dx < dy {
-            (0, dx)
+        let (step, rest) = if T::in_half_open(dx, dy) {
+            if dx < T::ZERO {
+                (T::ZERO - T::ONE, dx + dy)
+            } else {
+                (T::ZERO, dx)
+            }
         } else {
-            let (step, rest) = T::from_i64(dx).div_rem_floor(T::from_i64(dy));
-            (step.to_i64(), rest.to_i64())
+            dx.div_rem_floor(dy)
         };
         Self {
-            x: T::from_i64(x),
-            error: T::from_i64(error),
-            step: T::from_i64(step),
-            remainder: T::from_i64(UNIT * rest),
-            divisor: T::from_i64(divisor),
+            x,
+            error,
+            step,
+            remainder: rest << 8,
+            divisor,
         }
     }
 
@@ -84,23 +85,22 @@ impl<T: Lane> SubEdge<T> {
 /// 1/256 pixel). Written from the upper vertex's whole pixel, so that the usual case (a row
 /// less than a pixel below it, deltas under 2^21 units) takes one 32-bit division.
 #[inline(always)]
-fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> (i64, i64) {
-    let divisor = UNIT * dy;
-    // Shifts and masks, not `div_euclid` (whose remainder is a 64-bit multiply on M0).
-    let (whole, fraction) = (upper.0 >> 8, upper.0 & (UNIT - 1));
-    let down = UNIT * row - upper.1;
-
-    if down < UNIT && dy < SMALL && dx > -SMALL && dx < SMALL {
+fn start_bound<T: Lane>(upper: (T, T), (dx, dy): (T, T), bias: T, row: T) -> (T, T) {
+    let divisor = dy << 8;
+    let (whole, fraction) = (upper.0 >> 8, upper.0 & T::from_i32(0xFF));
+    let down = (row << 8) - upper.1;
+    let small = T::from_i32(SMALL);
+    if down < T::from_i32(256) && dy < small && T::in_half_open(dx, small) {
         // |fraction dy|, |down dx| and bias each below 2^29: the sum fits i32.
         // In 32 bits: 64-bit products are library calls on Cortex-M0.
-        let narrow = |v: i64| v as i32;
+        let narrow = |v: T| v.to_i64() as i32;
         let k = narrow(fraction) * narrow(dy) + narrow(down) * narrow(dx) + narrow(bias);
         let d = narrow(divisor);
         // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
         // `target_has_atomic` can tell) count steep edges' quotients out; the others divide
         // (counting measured +4% per small flat triangle on Cortex-M4F).
         let count = cfg!(not(target_has_atomic = "32"));
-        let (q, r) = if count && dx > -dy && dx < dy {
+        let (q, r) = if count && T::in_half_open(dx, dy) && dx != T::ZERO - dy {
             // Steep: each term is under D in magnitude, so K / D is -1 to 3; count it out
             // rather than divide (a library call on Cortex-M0).
             let (mut q, mut r) = (0, k);
@@ -116,9 +116,16 @@ fn start_bound(upper: (i64, i64), (dx, dy): (i64, i64), bias: i64, row: i64) -> 
         } else {
             k.div_rem_floor(d)
         };
-        return (whole + i64::from(q), i64::from(r) - divisor);
+        return (whole + T::from_i32(q), T::from_i32(r) - divisor);
     }
-    start_bound_wide((whole, fraction), (dx, dy), bias, down)
+    let wide = |v: T| v.to_i64();
+    let (x, error) = start_bound_wide(
+        (wide(whole), wide(fraction)),
+        (wide(dx), wide(dy)),
+        wide(bias),
+        wide(down),
+    );
+    (T::from_i64(x), T::from_i64(error))
 }
 
 /// [`start_bound`] for rows far below the vertex or long edges: out of line, once.
@@ -150,11 +157,12 @@ fn start_bound_wide(
 }
 
 /// Deltas below which an edge's start fits 32 bits.
-const SMALL: i64 = 1 << 21;
+const SMALL: i32 = 1 << 21;
 
 /// `ceil(v / 256)`.
-fn ceil_row(v: i64) -> i64 {
-    (v + UNIT - 1) >> 8
+#[inline(always)]
+fn ceil_row<T: Lane>(v: T) -> T {
+    (v + T::from_i32(0xFF)) >> 8
 }
 
 /// Feeds every span of `triangle` inside `clip` to `sink`, top to bottom, one per row: pixel
@@ -165,9 +173,8 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let [mut top, mut middle, mut bottom] = triangle
-        .vertices
-        .map(|p| (i64::from(p.x.to_bits()), i64::from(p.y.to_bits())));
+    let [mut top, mut middle, mut bottom] =
+        triangle.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
     // Sorted by row (ties in any order: coverage does not depend on it).
     if middle.1 < top.1 {
         core::mem::swap(&mut top, &mut middle);
@@ -178,19 +185,27 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
             core::mem::swap(&mut top, &mut middle);
         }
     }
-    // Triangles under 2^23 units (32,768 pixels) across walk in 32-bit arithmetic.
-    let span = |a: i64, b: i64, c: i64| a.max(b).max(c) - a.min(b).min(c);
-    if span(top.0, middle.0, bottom.0) < 1 << 23 && bottom.1 - top.1 < 1 << 23 {
+    // Triangles within ±2^30 units (4 million pixels) of the origin and under 2^23 units
+    // (32,768 pixels) high walk in 32-bit arithmetic: `256 * row`, every bound, `256 * dy`
+    // and the error terms then fit (widths do not matter: an x delta only divides).
+    let biased = |v: i32| v.wrapping_add(NARROW_LIMIT) as u32;
+    let inside =
+        biased(top.0) | biased(middle.0) | biased(bottom.0) | biased(top.1) | biased(bottom.1);
+    if inside < 1 << 31 && bottom.1 - top.1 < 1 << 23 {
         walk_in::<i32, K>([top, middle, bottom], rule, clip, sink)
     } else {
         // Rare: out of line and type-erased, one copy per error type.
-        walk_wide([top, middle, bottom], rule, clip, &mut |span| {
+        let wide = |(x, y): (i32, i32)| (i64::from(x), i64::from(y));
+        walk_wide([top, middle, bottom].map(wide), rule, clip, &mut |span| {
             sink.span(span)
         })
     }
 }
 
-/// [`walk_in`] in 64-bit arithmetic, for triangles 2^23 units across or more.
+/// Coordinates in `-NARROW_LIMIT..NARROW_LIMIT` (and heights under 2^23) walk in 32 bits.
+const NARROW_LIMIT: i32 = 1 << 30;
+
+/// [`walk_in`] in 64-bit arithmetic, for triangles beyond the 32-bit range.
 #[inline(never)]
 fn walk_wide<E>(
     vertices: [(i64, i64); 3],
@@ -204,18 +219,17 @@ fn walk_wide<E>(
 /// The walk of vertices sorted by row, in lane `T`.
 #[inline(always)]
 fn walk_in<T: Lane, K: SpanSink + ?Sized>(
-    [top, middle, bottom]: [(i64, i64); 3],
+    [top, middle, bottom]: [(T, T); 3],
     rule: FillRule,
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
     // The middle vertex right of the long edge (top to bottom): the long edge bounds the left.
-    let delta = |v: i64| T::from_i64(v);
     let Some(long_edge_left) = T::cross_positive(
-        delta(middle.0 - top.0),
-        delta(bottom.1 - top.1),
-        delta(middle.1 - top.1),
-        delta(bottom.0 - top.0),
+        middle.0 - top.0,
+        bottom.1 - top.1,
+        middle.1 - top.1,
+        bottom.0 - top.0,
     ) else {
         return Ok(());
     };
@@ -225,14 +239,16 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
         (x0 + i64::from(clip.size.width)).min(1 << 31),
         (y0 + i64::from(clip.size.height)).min(1 << 31),
     );
+    // The clip in the lane (clamping changes no comparison: bounds and rows stay inside).
+    let lane = |v: i64| T::from_i64(v.clamp(T::CLIP_MIN, T::CLIP_MAX));
     // Rows whose samples lie between the top and the bottom vertex: under the top-left rule a
     // sample on a bottom edge (or at a bottom apex) is out; under the inclusive rule, in.
     let (right_rounding, end) = match rule {
         FillRule::TopLeft => (Rounding::Ceil, ceil_row(bottom.1)),
-        FillRule::Inclusive => (Rounding::FloorPlusOne, (bottom.1 >> 8) + 1),
+        FillRule::Inclusive => (Rounding::FloorPlusOne, (bottom.1 >> 8) + T::ONE),
     };
-    let first = ceil_row(top.1).max(y0);
-    let end = end.min(y1);
+    let first = ceil_row(top.1).max(lane(y0));
+    let end = end.min(lane(y1));
     if first >= end {
         return Ok(());
     }
@@ -256,8 +272,6 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
         SubEdge::start(middle, bottom, short_rounding, first)
     };
     let mut long = long;
-    // The clip's columns in the lane (clamping changes no comparison: bounds stay inside).
-    let lane = |v: i64| T::from_i64(v.clamp(T::CLIP_MIN, T::CLIP_MAX));
     let (left_clip, right_clip) = (lane(x0), lane(x1));
     let mut row = first;
     let mut stop = if upper_half { switch.min(end) } else { end };
@@ -273,14 +287,14 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
                 // Inside the clip, whose coordinates fit i32.
                 let span = Span {
                     x: l.to_i64() as i32,
-                    y: row as i32,
+                    y: row.to_i64() as i32,
                     len: T::len_u32(r, l),
                 };
                 sink.span(span)?;
             }
             long.advance();
             short.advance();
-            row += 1;
+            row += T::ONE;
         }
         if stop >= end {
             return Ok(());

@@ -5,7 +5,7 @@
 //! otherwise (the wide path: any `i32` vertex, exact). Both run the same generic code.
 
 use core::cmp::Ordering;
-use core::ops::{Add, AddAssign, Sub, SubAssign};
+use core::ops::{Add, AddAssign, BitAnd, Shl, Shr, Sub, SubAssign};
 
 /// Vertex coordinates within ±`FAST_LIMIT` (2^30 - 1) take the 32-bit fast path.
 ///
@@ -36,7 +36,15 @@ const FAST_BIAS: i32 = 1 << 30;
 
 /// Integer operations the stepping code needs, for `i32` (fast) and `i64` (wide).
 pub(crate) trait Lane:
-    Copy + Ord + Add<Output = Self> + Sub<Output = Self> + AddAssign + SubAssign
+    Copy
+    + Ord
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + AddAssign
+    + SubAssign
+    + Shl<u32, Output = Self>
+    + Shr<u32, Output = Self>
+    + BitAnd<Output = Self>
 {
     const ZERO: Self;
     const ONE: Self;
