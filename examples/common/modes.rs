@@ -274,18 +274,6 @@ pub fn draw<const N: usize>(
     }
 }
 
-/// A scene vertex moved by a fraction of a pixel in each axis, from a hash of its
-/// coordinates: the same vertex always moves alike, so meshes stay meshes.
-pub fn subpixel(p: Point) -> SubPoint {
-    let hash = (p.x as u32).wrapping_mul(0x9E37_79B1) ^ (p.y as u32).wrapping_mul(0x85EB_CA77);
-    let hash = hash ^ (hash >> 15);
-    let fraction = |bits: u32| (bits & 0xFF) as i32;
-    SubPoint::new(
-        I24F8::from_bits(p.x * 256 + fraction(hash)),
-        I24F8::from_bits(p.y * 256 + fraction(hash >> 8)),
-    )
-}
-
 /// A scene triangle at its whole-pixel vertices.
 pub fn whole(t: &SceneTriangle) -> Triangle {
     let [a, b, c] = t.vertices;
@@ -294,7 +282,9 @@ pub fn whole(t: &SceneTriangle) -> Triangle {
 
 /// A scene triangle at its sub-pixel vertices.
 pub fn subpixel_triangle(t: &SceneTriangle) -> SubPixelTriangle {
-    let [a, b, c] = t.vertices.map(subpixel);
+    let [a, b, c] = t
+        .subpixel
+        .map(|[x, y]| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y)));
     SubPixelTriangle::new(a, b, c)
 }
 

@@ -19,6 +19,8 @@ pub struct SceneTriangle {
     /// [`stretched_coordinates`], computed with the scene: its divisions are the benchmark's,
     /// not drawing. Raw `I16F16` bits, so that the scenes need no fixed-point crate.
     pub coordinates: [[i32; 2]; 3],
+    /// [`subpixel_vertices`]: the sub-pixel modes' vertices, raw `I24F8` bits.
+    pub subpixel: [[i32; 2]; 3],
 }
 
 /// splitmix64: tiny, fast, and the same on every platform.
@@ -55,7 +57,20 @@ fn triangle(rng: &mut Rng, vertices: [Point; 3]) -> SceneTriangle {
         color: rng.color(),
         vertex_colors: [rng.color(), rng.color(), rng.color()],
         coordinates: stretched_coordinates(vertices),
+        subpixel: subpixel_vertices(vertices),
     }
+}
+
+/// Each vertex moved by a fraction of a pixel in each axis, from a hash of its coordinates
+/// (the same vertex always moves alike, so meshes stay meshes), as raw `I24F8` bits: computed
+/// with the scene, as a projection would give them, not counted as drawing.
+pub fn subpixel_vertices(vertices: [Point; 3]) -> [[i32; 2]; 3] {
+    vertices.map(|p| {
+        let hash = (p.x as u32).wrapping_mul(0x9E37_79B1) ^ (p.y as u32).wrapping_mul(0x85EB_CA77);
+        let hash = hash ^ (hash >> 15);
+        let fraction = |bits: u32| (bits & 0xFF) as i32;
+        [p.x * 256 + fraction(hash), p.y * 256 + fraction(hash >> 8)]
+    })
 }
 
 /// Texture coordinates stretching the texture's texel centres 0..=63 over the triangle's
