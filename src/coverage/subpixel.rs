@@ -48,7 +48,6 @@ impl<T: Lane> SubEdge<T> {
             Rounding::Ceil => divisor - T::ONE,
             Rounding::FloorPlusOne => divisor,
         };
-        let (x, error) = start_bound(upper, (dx, dy), bias, row);
         // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
         let (step, rest) = if T::in_half_open(dx, dy) {
             if dx < T::ZERO {
@@ -59,6 +58,7 @@ impl<T: Lane> SubEdge<T> {
         } else {
             dx.div_rem_floor(dy)
         };
+        let (x, error) = start_bound(upper, (dx, dy), (step, rest), bias, row);
         Self {
             x,
             error,
@@ -81,42 +81,51 @@ impl<T: Lane> SubEdge<T> {
 }
 
 /// The pixel bound `floor(K / D)` and error `K mod D - D` of an edge from `upper` with deltas
-/// `(dx, dy)` on pixel row `row`, where `K = X dy + bias` and `D = 256 dy` (`X` the crossing in
-/// 1/256 pixel). Written from the upper vertex's whole pixel, so that the usual case (a row
-/// less than a pixel below it, deltas under 2^21 units) takes one 32-bit division.
+/// `(dx, dy)` (`dx = step dy + rest`) on pixel row `row`, where `K = X dy + bias` and
+/// `D = 256 dy` (`X` the crossing in 1/256 pixel).
+///
+/// Written from the upper vertex's whole pixel `w` and fraction `f`, a row `down` units
+/// below it: `K = 256 w dy + dy (f + down step) + down rest + bias`. Split
+/// `f + down step = 256 a + b` (`b` in `0..256`); the rest, `dy b + down rest + bias`, is
+/// non-negative and under `3 D` when the row lies less than a pixel below the vertex, so the
+/// bound is `w + a` plus at most 2, counted out: no division beyond the edge's own step.
 #[inline(always)]
-fn start_bound<T: Lane>(upper: (T, T), (dx, dy): (T, T), bias: T, row: T) -> (T, T) {
+fn start_bound<T: Lane>(
+    upper: (T, T),
+    (dx, dy): (T, T),
+    (step, rest): (T, T),
+    bias: T,
+    row: T,
+) -> (T, T) {
     let divisor = dy << 8;
     let (whole, fraction) = (upper.0 >> 8, upper.0 & T::from_i32(0xFF));
     let down = (row << 8) - upper.1;
     let small = T::from_i32(SMALL);
     if down < T::from_i32(256) && dy < small && T::in_half_open(dx, small) {
-        // |fraction dy|, |down dx| and bias each below 2^29: the sum fits i32.
-        // In 32 bits: 64-bit products are library calls on Cortex-M0.
+        // |down step|, dy b, down rest and bias each below 2^29: every sum fits i32 (and
+        // 64-bit products are library calls on Cortex-M0).
         let narrow = |v: T| v.to_i64() as i32;
-        let k = narrow(fraction) * narrow(dy) + narrow(down) * narrow(dx) + narrow(bias);
+        let (down, dy) = (narrow(down), narrow(dy));
+        let moved = narrow(fraction) + down * narrow(step);
+        let mut x = narrow(whole) + (moved >> 8);
         let d = narrow(divisor);
+        let rest = dy * (moved & 0xFF) + down * narrow(rest) + narrow(bias);
         // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
-        // `target_has_atomic` can tell) count steep edges' quotients out; the others divide
-        // (counting measured +4% per small flat triangle on Cortex-M4F).
-        let count = cfg!(not(target_has_atomic = "32"));
-        let (q, r) = if count && T::in_half_open(dx, dy) && dx != T::ZERO - dy {
-            // Steep: each term is under D in magnitude, so K / D is -1 to 3; count it out
-            // rather than divide (a library call on Cortex-M0).
-            let (mut q, mut r) = (0, k);
-            while r < 0 {
-                r += d;
-                q -= 1;
-            }
-            while r >= d {
-                r -= d;
-                q += 1;
-            }
-            (q, r)
+        // `target_has_atomic` can tell) count the last pixels out; the others divide (counting
+        // measured +3% per small sub-pixel triangle on Cortex-M4F).
+        let error = if cfg!(target_has_atomic = "32") {
+            let (rest, d) = (rest as u32, d.max(1) as u32);
+            x += (rest / d) as i32;
+            (rest % d) as i32 - d as i32
         } else {
-            k.div_rem_floor(d)
+            let mut error = rest - d;
+            while error >= 0 {
+                error -= d;
+                x += 1;
+            }
+            error
         };
-        return (whole + T::from_i32(q), T::from_i32(r) - divisor);
+        return (T::from_i32(x), T::from_i32(error));
     }
     let wide = |v: T| v.to_i64();
     let (x, error) = start_bound_wide(
