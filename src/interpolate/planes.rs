@@ -109,7 +109,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
             Self::new_small_subpixel(p0, values, bias, e)
         } else {
-            Self::new_exact_subpixel(vertices, values, bias, reference)
+            Self::new_large_subpixel(vertices, values, bias, reference)
         }
     }
 
@@ -128,16 +128,15 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         } else {
             match rotate_into(vertices, values, |v| window.contains(pixel(v))) {
                 Some(rotated) => rotated,
-                None => return Self::new_exact_subpixel(vertices, values, bias, window.top_left),
+                None => return Self::new_large_subpixel(vertices, values, bias, window.top_left),
             }
         };
         let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        let small = e.iter().all(|d| d.unsigned_abs() < 1 << 15);
-        if small {
+        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
             Self::new_small_subpixel(p0, values, bias, e)
         } else {
-            Self::new_exact_subpixel(vertices, values, bias, window.top_left)
+            Self::new_large_subpixel(vertices, values, bias, window.top_left)
         }
     }
 
@@ -179,26 +178,36 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         Some(Self::from_parts(origin, base, dx, dy))
     }
 
-    /// [`Planes::new_exact`] for vertices in 1/256 pixel.
+    /// Setup for sub-pixel triangles too large for [`Planes::new_small_subpixel`]: by
+    /// [`medium_plane`] under 2^19 units (2,048 pixels) across, beyond by
+    /// [`exact_plane_subpixel`] ([`Planes::new_exact`] for vertices in 1/256 pixel, values
+    /// evaluated at `reference`). Out of line: big triangles only.
     #[cold]
     #[inline(never)]
-    fn new_exact_subpixel(
+    fn new_large_subpixel(
         vertices: [(i32, i32); 3],
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let mut planes = Self::empty(reference);
+        let large = medium_setup(vertices, SETUP - STEP_BITS);
+        let origin = match &large {
+            Large::Medium(medium) => medium.origin,
+            Large::Degenerate => return None,
+            Large::Exact => reference,
+        };
+        let (mut base, mut dx, mut dy) = ([0; N], [0; N], [0; N]);
         for k in 0..N {
             let values = [values[0][k], values[1][k], values[2][k]];
-            let (base, dx, dy) =
-                exact_plane_subpixel(vertices, values, bias, reference, SETUP - STEP_BITS)?;
-            planes.base[k] = base;
-            planes.dx[k] = dx;
-            planes.dy[k] = dy;
+            (base[k], dx[k], dy[k]) = match &large {
+                Large::Medium(medium) => {
+                    let at_vertex = (values[0] + bias) << (SETUP - STEP_BITS);
+                    medium_plane(values, at_vertex, medium)
+                }
+                _ => exact_plane_subpixel(vertices, values, bias, reference, SETUP - STEP_BITS)?,
+            };
         }
-        planes.finish();
-        Some(planes)
+        Some(Self::from_parts(origin, base, dx, dy))
     }
 
     /// Setup for triangles under 2^15 pixels across: one division (a reciprocal of the area)
@@ -378,6 +387,123 @@ fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
         Ok(d @ 0x1_0000..=0x7FFF_FFFF) if cfg!(target_arch = "arm") => reciprocal_by_correction(d),
         _ => (1u64 << 62) / divisor.max(1),
     }
+}
+
+/// Sub-pixel triangles with every vertex delta below 2^`MEDIUM_BITS` units take
+/// [`medium_plane`] when too large for the small setup.
+const MEDIUM_BITS: u32 = 19;
+
+/// How a sub-pixel triangle too large for the small setup sets its planes up.
+enum Large {
+    Medium(Medium),
+    Degenerate,
+    Exact,
+}
+
+/// What every plane of a sub-pixel triangle under 2^19 units across shares: the gradient
+/// scaling `numerator * ±reciprocal / 2^shift`, the first vertex's whole pixel and its
+/// fraction / 256 pixel right of and below it, and the deltas to the other vertices.
+struct Medium {
+    reciprocal: u64,
+    negative: bool,
+    shift: u32,
+    origin: Point,
+    fraction: (i64, i64),
+    e: [i32; 4],
+}
+
+/// [`Medium`] for `vertices` when under 2^19 units across, with values carrying
+/// `scale_bits` fraction bits beyond raw 16.16. Not generic: one copy.
+#[inline(never)]
+fn medium_setup(vertices: [(i32, i32); 3], scale_bits: u32) -> Large {
+    let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+    let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+    if !e.iter().all(|d| d.unsigned_abs() < 1 << MEDIUM_BITS) {
+        return Large::Exact;
+    }
+    let [ex1, ey1, ex2, ey2] = e;
+    // |deltas| < 2^19: the doubled area below 2^39.
+    let area = ex1 * ey2 - ex2 * ey1;
+    if area == 0 {
+        return Large::Degenerate;
+    }
+    let (reciprocal, bits) = reciprocal_normalised(area.unsigned_abs());
+    Large::Medium(Medium {
+        reciprocal,
+        negative: area < 0,
+        // Gradient per pixel in 2^-(16 + scale_bits) units: numerator * 2^(scale_bits + 8)
+        // / area.
+        shift: 61 + bits - scale_bits - 8,
+        origin: Point::new((p0.0 >> 8) as i32, (p0.1 >> 8) as i32),
+        fraction: (p0.0 & 255, p0.1 & 255),
+        e: e.map(|d| d as i32),
+    })
+}
+
+/// One plane of a [`Medium`] triangle, from the first vertex's value `at_vertex` (in the
+/// setup's units): the value at the first vertex's whole pixel and the gradients per pixel.
+///
+/// The reciprocal carries 61 significant bits ([`reciprocal_normalised`]: some 700
+/// instructions on Cortex-M0 where the exact setup's 128-bit divisions take some 20,000), so
+/// each gradient is within one unit of 2^-SETUP plus 2^-60 of its size, and a value `D`
+/// pixels from the first vertex within `D` units plus 2^-59 of the plane's change over `D`
+/// along both axes. That change is at most 2^38 times the values' spread (an area of one
+/// unit² over 2^19-unit deltas): the error stays below 2^-21 of the spread, 2^-5 of a level
+/// for 16-bit values. Not generic: one copy for every plane count and precision.
+#[inline(never)]
+fn medium_plane(values: [i64; 3], at_vertex: i64, medium: &Medium) -> (i64, i64, i64) {
+    let scale = |numerator: i64, extra: u32| {
+        scale_by(
+            numerator,
+            medium.reciprocal,
+            medium.negative,
+            medium.shift + extra,
+        )
+    };
+    // Values below 2^33 and deltas below 2^19: numerators below 2^53.
+    let [nx, ny] = numerators_wide(values[1] - values[0], values[2] - values[0], medium.e);
+    // The whole pixel lies (fx, fy) / 256 pixel up and left of the vertex: the change from
+    // the numerators (below 2^62 with the fractions), not from the gradients, which wrap for
+    // slivers.
+    let (fx, fy) = medium.fraction;
+    let offset = scale(nx * fx + ny * fy, 8);
+    (at_vertex.wrapping_sub(offset), scale(nx, 0), scale(ny, 0))
+}
+
+/// `(floor(2^(61 + b) / d), b)` for a `b`-bit `d` (`0 < d < 2^63`): a reciprocal with 61
+/// significant bits, in `(2^61, 2^62]`, by 63 steps of shift and subtract. Out of line, one
+/// copy.
+#[inline(never)]
+fn reciprocal_normalised(divisor: u64) -> (u64, u32) {
+    let bits = 64 - divisor.leading_zeros();
+    // The dividend's bits above the quotient's 63: 2^(61 + b) >> 62.
+    let mut rest = 1u64 << (bits - 1);
+    // A marker bit shifted up with the quotient's bits ends the loop after 63 of them (a
+    // loop LLVM does not unroll: 470 bytes less on Cortex-M0).
+    let mut quotient = 1u64;
+    while quotient < 1 << 63 {
+        let bit = rest >= divisor;
+        if bit {
+            rest -= divisor;
+        }
+        quotient = (quotient << 1) | u64::from(bit);
+        rest <<= 1;
+    }
+    (quotient - (1 << 63), bits)
+}
+
+/// `numerator * ±reciprocal / 2^shift` rounded half up, as wrapping `i64`, for any `shift`
+/// in `1..=127`: [`scale`] for [`medium_plane`]'s varying shifts. Magnitudes
+/// below 2^63 and 2^62 keep the product within 128 bits. Out of line, one copy.
+#[inline(never)]
+fn scale_by(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    let product = wide_product(numerator.unsigned_abs(), reciprocal) as i128;
+    let signed = if (numerator < 0) == negative {
+        product
+    } else {
+        -product
+    };
+    ((signed + (1 << (shift - 1))) >> shift) as i64
 }
 
 /// `floor(2^62 / d)` for `0 < d < 2^16` on Arm: by [`reciprocal_by_digits`] where 32-bit
@@ -924,6 +1050,139 @@ mod tests {
                 assert_eq!(planes.dx[k], from_first.dx[k], "{v:?}");
                 assert_eq!(planes.dy[k], from_first.dy[k], "{v:?}");
             }
+        }
+    }
+
+    /// Sub-pixel triangles up to 2^19 units across, slivers included: the medium setup's
+    /// values at pixels over the triangle within one raw unit (plus the documented 2^-21 of
+    /// the values' spread) of the exact plane, for both precisions; the gradients within a
+    /// unit of the exact setup's.
+    #[test]
+    fn medium_subpixel_setups_agree_with_the_plane() {
+        let mut rng = crate::test_rng::XorShift(0x5EED_0019);
+        let mut range = |lo: i64, hi: i64| lo + (rng.next_u64() % (hi - lo + 1) as u64) as i64;
+        let mut medium = 0;
+        for case in 0..3000 {
+            let reach = [1 << 16, 1 << 18, (1 << 19) - 1][case % 3];
+            let mut points = [(0i64, 0i64); 3];
+            for p in &mut points {
+                *p = (range(-reach / 2, reach / 2), range(-reach / 2, reach / 2));
+            }
+            if case % 4 == 0 {
+                // A sliver: the third vertex levels few units off the line through the others.
+                let along = range(0, 256);
+                points[2] = (
+                    points[0].0 + (points[1].0 - points[0].0) * along / 256 + range(-3, 3),
+                    points[0].1 + (points[1].1 - points[0].1) * along / 256 + range(-3, 3),
+                );
+            }
+            let deltas = [
+                points[1].0 - points[0].0,
+                points[1].1 - points[0].1,
+                points[2].0 - points[0].0,
+                points[2].1 - points[0].1,
+            ];
+            let within = |bits: u32| deltas.iter().all(|d| d.unsigned_abs() < 1 << bits);
+            if within(15) || !within(MEDIUM_BITS) {
+                continue;
+            }
+            let area = deltas[0] * deltas[3] - deltas[2] * deltas[1];
+            if area == 0 {
+                continue;
+            }
+            medium += 1;
+            let spread = range(0, 0xFFFF_FFFF);
+            let levels = [0, 0, 0].map(|_| range(-spread / 2, spread / 2));
+            let raw = points.map(|(x, y)| (x as i32, y as i32));
+            let values = levels.map(|levels| [levels, -levels]);
+            let planes16 = Planes::<2, 32>::new_subpixel(raw, values, 0, Point::zero()).unwrap();
+            let planes46 = Planes::<2, 46>::new_subpixel(raw, values, 0, Point::zero()).unwrap();
+            let exact16 = |k: usize| {
+                let values = [values[0][k], values[1][k], values[2][k]];
+                exact_plane_subpixel(raw, values, 0, Point::zero(), 16).unwrap()
+            };
+            // Within levels unit plus 2^-60 of the gradient (the exact ones wrap as these do).
+            let near = |got: i64, want: i64| {
+                got.wrapping_sub(want).unsigned_abs() <= 1 + (want.unsigned_abs() >> 60)
+            };
+            for k in 0..2 {
+                let (_, dx, dy) = exact16(k);
+                assert!(near(planes16.dx[k], dx), "{points:?} {levels:?}");
+                assert!(near(planes16.dy[k], dy), "{points:?} {levels:?}");
+            }
+            let tolerance = 1 + i128::from(spread >> 21);
+            for _ in 0..8 {
+                // A pixel near the triangle: levels vertex's, or between two vertices.
+                let (i, j) = (range(0, 2) as usize, range(0, 2) as usize);
+                let along = range(0, 16);
+                let x = (points[i].0 + (points[j].0 - points[i].0) * along / 16) >> 8;
+                let y = (points[i].1 + (points[j].1 - points[i].1) * along / 16) >> 8;
+                let (num, den) = exact(points, levels, x * 256, y * 256);
+                // Only values inside the vertices' range must fit (pixels whose square the
+                // triangle crosses may lie outside it, where levels sliver's plane runs off).
+                let (low, high) = (levels.iter().min().unwrap(), levels.iter().max().unwrap());
+                if num < i128::from(*low) * den || num > i128::from(*high) * den {
+                    continue;
+                }
+                let got16 = i128::from(planes16.at(x as i32, y as i32)[0] as i32);
+                assert!(
+                    (got16 * den - num).abs() <= tolerance * den,
+                    "{points:?} {levels:?} at ({x}, {y}): {got16} vs {}",
+                    num / den
+                );
+                let got46 = planes46.at_exact(x as i32, y as i32)[0] >> 30;
+                assert!(
+                    (i128::from(got46 as i32) * den - num).abs() <= (tolerance + 1) * den,
+                    "{points:?} {levels:?} at ({x}, {y}): {got46} vs {}",
+                    num / den
+                );
+            }
+        }
+        assert!(medium > 1000, "{medium}");
+    }
+
+    #[test]
+    fn normalised_reciprocals_are_the_128_bit_division() {
+        let mut rng = crate::test_rng::XorShift(0x0123_4567_89AB_CDEF);
+        let check = |d: u64| {
+            let bits = 64 - d.leading_zeros();
+            let want = ((1u128 << (61 + bits)) / u128::from(d)) as u64;
+            assert_eq!(reciprocal_normalised(d), (want, bits), "{d}");
+        };
+        for d in 1..5000 {
+            check(d);
+        }
+        for shift in 1..63 {
+            for d in [(1u64 << shift) - 1, 1 << shift, (1 << shift) + 1] {
+                check(d);
+            }
+        }
+        for _ in 0..20_000 {
+            let d = rng.next_u64() >> (rng.next_u64() % 63);
+            check(d.max(1) >> 1 | 1);
+        }
+    }
+
+    #[test]
+    fn variable_scaling_is_the_128_bit_product() {
+        let mut rng = crate::test_rng::XorShift(0xFEED_BEEF_0000_0001);
+        for _ in 0..20_000 {
+            let n = (rng.next_u64() >> (rng.next_u64() % 53 + 11)) as i64;
+            let n = if rng.next_u64() & 1 == 0 { n } else { -n };
+            let r = (rng.next_u64() >> 2).max(1);
+            let negative = rng.next_u64() & 1 == 0;
+            let shift = 1 + (rng.next_u64() % 127) as u32;
+            let signed = if negative {
+                -i128::from(r)
+            } else {
+                i128::from(r)
+            };
+            let want = (i128::from(n) * signed + (1i128 << (shift - 1))) >> shift;
+            assert_eq!(
+                scale_by(n, r, negative, shift),
+                want as i64,
+                "{n} {r} {shift}"
+            );
         }
     }
 
