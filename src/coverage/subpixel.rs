@@ -56,7 +56,7 @@ impl<T: Lane> SubEdge<T> {
                 (T::ZERO, dx)
             }
         } else {
-            dx.div_rem_floor(dy)
+            dx.div_rem_floor_by_bits(dy)
         };
         let (x, error) = start_bound(upper, (dx, dy), (step, rest), bias, row);
         Self {
