@@ -161,8 +161,6 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         let gradient = |numerator: i64| scale(numerator, reciprocal, area < 0, shift);
         let origin = Point::new((first.0 >> 8) as i32, (first.1 >> 8) as i32);
         let (fx, fy) = (first.0 & 255, first.1 & 255);
-        // floor(g * f / 256) for 0 <= f < 256, without a wider product.
-        let part = |g: i64, f: i64| (g >> 8).wrapping_mul(f) + (((g & 255) * f) >> 8);
         let (mut base, mut dx, mut dy) = ([0; N], [0; N], [0; N]);
         let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
@@ -172,8 +170,8 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             // The origin lies (fx, fy) / 256 pixel up and left of the vertex.
             let at_vertex = (a0 + bias) << (SETUP - STEP_BITS);
             base[k] = at_vertex
-                .wrapping_sub(part(dx[k], fx))
-                .wrapping_sub(part(dy[k], fy));
+                .wrapping_sub(fraction_of(dx[k], fx))
+                .wrapping_sub(fraction_of(dy[k], fy));
         }
         Some(Self::from_parts(origin, base, dx, dy))
     }
@@ -689,6 +687,29 @@ fn wide_product(magnitude: u64, reciprocal: u64) -> u128 {
     u128::from(widening_mul(lower, reciprocal_low))
         + (middle << 32)
         + (u128::from(widening_mul(upper, reciprocal_high)) << 64)
+}
+
+/// `floor(g * f / 256)` for `0 <= f < 256`, wrapping, without a wider product: on cores
+/// without a 64-bit multiply (Cortex-M0, where it is a library call of about forty
+/// instructions, twelve per small sub-pixel Gouraud triangle) from 32-bit multiplies.
+#[inline(always)]
+fn fraction_of(g: i64, f: i64) -> i64 {
+    if cfg!(target_has_atomic = "32") {
+        (g >> 8).wrapping_mul(f).wrapping_add(((g & 255) * f) >> 8)
+    } else {
+        fraction_of_split(g, f)
+    }
+}
+
+/// [`fraction_of`] from 32-bit multiplies.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(always)]
+fn fraction_of_split(g: i64, f: i64) -> i64 {
+    let rest = ((g & 255) as u32 * f as u32) >> 8;
+    let (whole, f) = ((g >> 8) as u64, f as u32);
+    let (high, low) = ((whole >> 32) as u32, whole as u32);
+    let product = (u64::from(high.wrapping_mul(f)) << 32).wrapping_add(widening_mul(low, f));
+    product.wrapping_add(u64::from(rest)) as i64
 }
 
 /// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
@@ -1368,6 +1389,23 @@ mod tests {
                     check(d);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn fractions_of_gradients_are_the_wide_product() {
+        let mut rng = crate::test_rng::XorShift(0xF4AC_7100_0000_0256);
+        for k in 0..50_000 {
+            let g = match k % 4 {
+                0 => rng.next_u64() as i64,
+                1 => (rng.next_u64() as i64) >> 20,
+                2 => -((rng.next_u64() >> 30) as i64),
+                _ => [0, 1, -1, 255, -256, i64::MAX, i64::MIN][k % 7],
+            };
+            let f = (rng.next_u64() % 256) as i64;
+            let want = ((i128::from(g) * i128::from(f)) >> 8) as i64;
+            assert_eq!(fraction_of(g, f), want, "{g} {f}");
+            assert_eq!(fraction_of_split(g, f), want, "{g} {f}");
         }
     }
 
