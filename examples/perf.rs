@@ -51,6 +51,8 @@ use trirast::{
 const MODES: &[&str] = &[
     "flat",
     "gouraud",
+    "flat-sub",
+    "gouraud-sub",
     "gouraud-z",
     "flat-z",
     "band",
@@ -125,6 +127,8 @@ where
     match mode {
         "flat" => flat_frame(scene, target),
         "gouraud" => gouraud_frame(scene, target),
+        "flat-sub" => flat_subpixel_frame(scene, target),
+        "gouraud-sub" => gouraud_subpixel_frame(scene, target),
         "eg-flat" => eg_flat_frame(scene, target),
         "gouraud-z" | "flat-z" => {
             let size = target.bounding_box().size;
@@ -201,6 +205,36 @@ where
     for t in scene {
         let [a, b, c] = t.vertices;
         Triangle::new(a, b, c)
+            .into_styled(GouraudStyle::new(t.vertex_colors))
+            .draw(target)
+            .unwrap();
+    }
+}
+
+/// `flat` at the scene's sub-pixel vertices (as the firmware's `flat-sub`).
+#[inline(never)]
+fn flat_subpixel_frame<D>(scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        modes::subpixel_triangle(t)
+            .into_styled(FlatStyle::new(t.color))
+            .draw(target)
+            .unwrap();
+    }
+}
+
+/// `gouraud` at the scene's sub-pixel vertices (as the firmware's `gouraud-sub`).
+#[inline(never)]
+fn gouraud_subpixel_frame<D>(scene: &[SceneTriangle], target: &mut D)
+where
+    D: DrawTarget<Color = Rgb565>,
+    D::Error: core::fmt::Debug,
+{
+    for t in scene {
+        modes::subpixel_triangle(t)
             .into_styled(GouraudStyle::new(t.vertex_colors))
             .draw(target)
             .unwrap();
