@@ -275,23 +275,23 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
     };
     let long = SubEdge::<T>::start(top, bottom, long_rounding, first);
     let upper_half = first < switch;
-    let mut short = if upper_half {
+    let short = if upper_half {
         SubEdge::start(top, middle, short_rounding, first)
     } else {
         SubEdge::start(middle, bottom, short_rounding, first)
     };
-    let mut long = long;
+    // Left and right chosen once: the rows then step two bounds, whichever edge each is.
+    let (mut left, mut right) = if long_edge_left {
+        (long, short)
+    } else {
+        (short, long)
+    };
     let (left_clip, right_clip) = (lane(x0), lane(x1));
     let mut row = first;
     let mut stop = if upper_half { switch.min(end) } else { end };
     loop {
         while row < stop {
-            let (l, r) = if long_edge_left {
-                (long.x, short.x)
-            } else {
-                (short.x, long.x)
-            };
-            let (l, r) = (l.max(left_clip), r.min(right_clip));
+            let (l, r) = (left.x.max(left_clip), right.x.min(right_clip));
             if l < r {
                 // Inside the clip, whose coordinates fit i32.
                 let span = Span {
@@ -301,15 +301,20 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
                 };
                 sink.span(span)?;
             }
-            long.advance();
-            short.advance();
+            left.advance();
+            right.advance();
             row += T::ONE;
         }
         if stop >= end {
             return Ok(());
         }
         // The lower half: the lower short edge from the first row below the middle vertex.
-        short = SubEdge::start(middle, bottom, short_rounding, row);
+        let lower = SubEdge::start(middle, bottom, short_rounding, row);
+        if long_edge_left {
+            right = lower;
+        } else {
+            left = lower;
+        }
         stop = end;
     }
 }
