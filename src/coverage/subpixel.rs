@@ -40,15 +40,81 @@ impl<T: Lane> SubEdge<T> {
     /// The edge from `upper` to `lower` (1/256 units, `upper.1 < lower.1`) at pixel row `row`,
     /// whose samples lie at or below `upper`. Out of line: one copy per lane serves every
     /// style and target.
+    ///
+    /// The bound is `floor(K / D)` and the error `K mod D - D`, where `K = X dy + bias`,
+    /// `D = 256 dy` and `X` is the crossing in 1/256 pixel. Written from the upper vertex's
+    /// whole pixel `w` and fraction `f`, a row `down` units below it, with
+    /// `dx = step dy + rest`: `K = 256 w dy + dy (f + down step) + down rest + bias`. Split
+    /// `f + down step = 256 a + b` (`b` in `0..256`); the rest, `dy b + down rest + bias`, is
+    /// non-negative and under `3 D` when the row lies less than a pixel below the vertex, so
+    /// the bound is `w + a` plus at most 2: no division beyond the edge's own step.
     #[inline(never)]
     fn start(upper: (T, T), lower: (T, T), rounding: Rounding, row: T) -> Self {
         let (dx, dy) = (lower.0 - upper.0, lower.1 - upper.1);
+        let down = (row << 8) - upper.1;
+        let small = T::from_i32(SMALL);
+        if !(down < T::from_i32(256) && dy < small && T::in_half_open(dx, small)) {
+            return Self::start_far(upper, (dx, dy), rounding, down);
+        }
+        // Deltas below 2^21 and a row within a pixel of the vertex: |down step|, dy b,
+        // down rest and bias each below 2^29, so every sum fits i32 (and 64-bit products are
+        // library calls on Cortex-M0).
+        let narrow = |v: T| v.to_i64() as i32;
+        let (dx, dy, down) = (narrow(dx), narrow(dy), narrow(down));
+        let d = dy << 8;
+        let bias = match rounding {
+            Rounding::Ceil => d - 1,
+            Rounding::FloorPlusOne => d,
+        };
+        // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
+        let (step, rest) = if <i32 as Lane>::in_half_open(dx, dy) {
+            if dx < 0 {
+                (-1, dx + dy)
+            } else {
+                (0, dx)
+            }
+        } else {
+            dx.div_rem_floor_by_bits(dy)
+        };
+        let upper_x = narrow(upper.0);
+        let moved = (upper_x & 0xFF) + down * step;
+        let mut x = (upper_x >> 8) + (moved >> 8);
+        let rest_k = dy * (moved & 0xFF) + down * rest + bias;
+        // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
+        // `target_has_atomic` can tell) count the last pixels out; the others divide (counting
+        // measured +3% per small sub-pixel triangle on Cortex-M4F).
+        let error = if cfg!(target_has_atomic = "32") {
+            let (rest_k, d) = (rest_k as u32, d.max(1) as u32);
+            x += (rest_k / d) as i32;
+            (rest_k % d) as i32 - d as i32
+        } else {
+            let mut error = rest_k - d;
+            while error >= 0 {
+                error -= d;
+                x += 1;
+            }
+            error
+        };
+        Self {
+            x: T::from_i32(x),
+            error: T::from_i32(error),
+            step: T::from_i32(step),
+            remainder: T::from_i32(rest << 8),
+            divisor: T::from_i32(d),
+        }
+    }
+
+    /// [`SubEdge::start`] for rows a pixel or more below the vertex (clipped tops, the lower
+    /// short edge of a triangle clipped below its middle vertex) or deltas of 2^21 units and
+    /// more: in 64 or 128 bits, out of line.
+    #[cold]
+    #[inline(never)]
+    fn start_far(upper: (T, T), (dx, dy): (T, T), rounding: Rounding, down: T) -> Self {
         let divisor = dy << 8;
         let bias = match rounding {
             Rounding::Ceil => divisor - T::ONE,
             Rounding::FloorPlusOne => divisor,
         };
-        // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
         let (step, rest) = if T::in_half_open(dx, dy) {
             if dx < T::ZERO {
                 (T::ZERO - T::ONE, dx + dy)
@@ -56,12 +122,18 @@ impl<T: Lane> SubEdge<T> {
                 (T::ZERO, dx)
             }
         } else {
-            dx.div_rem_floor_by_bits(dy)
+            dx.div_rem_floor(dy)
         };
-        let (x, error) = start_bound(upper, (dx, dy), (step, rest), bias, row);
+        let wide = |v: T| v.to_i64();
+        let (x, error) = start_bound_wide(
+            (wide(upper.0 >> 8), wide(upper.0 & T::from_i32(0xFF))),
+            (wide(dx), wide(dy)),
+            wide(bias),
+            wide(down),
+        );
         Self {
-            x,
-            error,
+            x: T::from_i64(x),
+            error: T::from_i64(error),
             step,
             remainder: rest << 8,
             divisor,
@@ -80,64 +152,8 @@ impl<T: Lane> SubEdge<T> {
     }
 }
 
-/// The pixel bound `floor(K / D)` and error `K mod D - D` of an edge from `upper` with deltas
-/// `(dx, dy)` (`dx = step dy + rest`) on pixel row `row`, where `K = X dy + bias` and
-/// `D = 256 dy` (`X` the crossing in 1/256 pixel).
-///
-/// Written from the upper vertex's whole pixel `w` and fraction `f`, a row `down` units
-/// below it: `K = 256 w dy + dy (f + down step) + down rest + bias`. Split
-/// `f + down step = 256 a + b` (`b` in `0..256`); the rest, `dy b + down rest + bias`, is
-/// non-negative and under `3 D` when the row lies less than a pixel below the vertex, so the
-/// bound is `w + a` plus at most 2, counted out: no division beyond the edge's own step.
-#[inline(always)]
-fn start_bound<T: Lane>(
-    upper: (T, T),
-    (dx, dy): (T, T),
-    (step, rest): (T, T),
-    bias: T,
-    row: T,
-) -> (T, T) {
-    let divisor = dy << 8;
-    let (whole, fraction) = (upper.0 >> 8, upper.0 & T::from_i32(0xFF));
-    let down = (row << 8) - upper.1;
-    let small = T::from_i32(SMALL);
-    if down < T::from_i32(256) && dy < small && T::in_half_open(dx, small) {
-        // |down step|, dy b, down rest and bias each below 2^29: every sum fits i32 (and
-        // 64-bit products are library calls on Cortex-M0).
-        let narrow = |v: T| v.to_i64() as i32;
-        let (down, dy) = (narrow(down), narrow(dy));
-        let moved = narrow(fraction) + down * narrow(step);
-        let mut x = narrow(whole) + (moved >> 8);
-        let d = narrow(divisor);
-        let rest = dy * (moved & 0xFF) + down * narrow(rest) + narrow(bias);
-        // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
-        // `target_has_atomic` can tell) count the last pixels out; the others divide (counting
-        // measured +3% per small sub-pixel triangle on Cortex-M4F).
-        let error = if cfg!(target_has_atomic = "32") {
-            let (rest, d) = (rest as u32, d.max(1) as u32);
-            x += (rest / d) as i32;
-            (rest % d) as i32 - d as i32
-        } else {
-            let mut error = rest - d;
-            while error >= 0 {
-                error -= d;
-                x += 1;
-            }
-            error
-        };
-        return (T::from_i32(x), T::from_i32(error));
-    }
-    let wide = |v: T| v.to_i64();
-    let (x, error) = start_bound_wide(
-        (wide(whole), wide(fraction)),
-        (wide(dx), wide(dy)),
-        wide(bias),
-        wide(down),
-    );
-    (T::from_i64(x), T::from_i64(error))
-}
-
-/// [`start_bound`] for rows far below the vertex or long edges: out of line, once.
+/// The bound and error of [`SubEdge::start`] for rows far below the vertex or long edges, in
+/// 64 bits or, for far rows, 128: out of line, once.
 #[inline(never)]
 fn start_bound_wide(
     (whole, fraction): (i64, i64),
