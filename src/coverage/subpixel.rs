@@ -305,8 +305,10 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
     let (left_clip, right_clip) = (lane(x0), lane(x1));
     let mut row = first;
     let mut stop = if upper_half { switch.min(end) } else { end };
+    // Rows run in at most two stretches, above and below the middle vertex; the edges step
+    // between rows, not after the last one of a stretch.
     loop {
-        while row < stop {
+        loop {
             let (l, r) = (left.x.max(left_clip), right.x.min(right_clip));
             if l < r {
                 // Inside the clip, whose coordinates fit i32.
@@ -317,9 +319,12 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
                 };
                 sink.span(span)?;
             }
+            row += T::ONE;
+            if row >= stop {
+                break;
+            }
             left.advance();
             right.advance();
-            row += T::ONE;
         }
         if stop >= end {
             return Ok(());
@@ -327,8 +332,10 @@ fn walk_in<T: Lane, K: SpanSink + ?Sized>(
         // The lower half: the lower short edge from the first row below the middle vertex.
         let lower = SubEdge::start(middle, bottom, short_rounding, row);
         if long_edge_left {
+            left.advance();
             right = lower;
         } else {
+            right.advance();
             left = lower;
         }
         stop = end;
