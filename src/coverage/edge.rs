@@ -22,9 +22,10 @@ pub(crate) enum Rounding {
 ///
 /// Steep edges (`-dy <= dx < dy`, about half of all edges and most edges of small triangles)
 /// move at most one pixel per row: their quotient is `0` or `-1`, found without dividing.
-/// That matters most on cores without a divide instruction.
+/// That matters most on cores without a divide instruction. Shallow edges divide by `divide`
+/// (the lane's floor division, or a compact one where quotients are expected small).
 #[inline(always)]
-fn increments<T: Lane>(dx: T, dy: T) -> (T, T) {
+pub(crate) fn increments<T: Lane>(dx: T, dy: T, divide: impl FnOnce(T, T) -> (T, T)) -> (T, T) {
     if T::in_half_open(dx, dy) {
         // -dy <= dx < dy: quotient -1 below zero, 0 above.
         if dx < T::ZERO {
@@ -33,7 +34,7 @@ fn increments<T: Lane>(dx: T, dy: T) -> (T, T) {
             (T::ZERO, dx)
         }
     } else {
-        dx.div_rem_floor(dy)
+        divide(dx, dy)
     }
 }
 
@@ -99,7 +100,7 @@ impl<T: Lane> EdgeStepper<T> {
         let (xa, ya) = upper;
         let dy = lower.1 - ya;
         debug_assert!(dy > T::ZERO && row >= ya && row <= lower.1);
-        let (step, remainder) = increments(lower.0 - xa, dy);
+        let (step, remainder) = increments(lower.0 - xa, dy, T::div_rem_floor);
         let (x, error) = bound_at(xa, dy, (step, remainder), rounding, row - ya);
         Self {
             x,
@@ -148,7 +149,7 @@ impl<T: Lane> ExactEdge<T> {
             xa: upper.0,
             ya: upper.1,
             dy,
-            increments: increments(lower.0 - upper.0, dy),
+            increments: increments(lower.0 - upper.0, dy, T::div_rem_floor),
             rounding,
         }
     }

@@ -10,10 +10,16 @@
 
 use embedded_graphics::primitives::Rectangle;
 
-use super::{edge::Rounding, FillRule, Span, SpanSink};
+use super::{
+    edge::{increments, Rounding},
+    FillRule, Span, SpanSink,
+};
 use crate::{
     geometry::SubPixelTriangle,
-    setup::{lane::floor_div_rem_i128, Lane},
+    setup::{
+        lane::{div_rem_floor_compact, floor_div_rem_i128},
+        Lane,
+    },
 };
 
 /// One sub-pixel unit per pixel.
@@ -66,16 +72,7 @@ impl<T: Lane> SubEdge<T> {
             Rounding::Ceil => d - 1,
             Rounding::FloorPlusOne => d,
         };
-        // Steep edges (-dy <= dx < dy) move at most a pixel a row: no division.
-        let (step, rest) = if <i32 as Lane>::in_half_open(dx, dy) {
-            if dx < 0 {
-                (-1, dx + dy)
-            } else {
-                (0, dx)
-            }
-        } else {
-            dx.div_rem_floor_by_bits(dy)
-        };
+        let (step, rest) = increments(dx, dy, div_rem_floor_compact);
         let upper_x = narrow(upper.0);
         let moved = (upper_x & 0xFF) + down * step;
         let mut x = (upper_x >> 8) + (moved >> 8);
@@ -115,15 +112,7 @@ impl<T: Lane> SubEdge<T> {
             Rounding::Ceil => divisor - T::ONE,
             Rounding::FloorPlusOne => divisor,
         };
-        let (step, rest) = if T::in_half_open(dx, dy) {
-            if dx < T::ZERO {
-                (T::ZERO - T::ONE, dx + dy)
-            } else {
-                (T::ZERO, dx)
-            }
-        } else {
-            dx.div_rem_floor(dy)
-        };
+        let (step, rest) = increments(dx, dy, T::div_rem_floor);
         let wide = |v: T| v.to_i64();
         let (x, error) = start_bound_wide(
             (wide(upper.0 >> 8), wide(upper.0 & T::from_i32(0xFF))),

@@ -59,9 +59,6 @@ pub(crate) trait Lane:
     fn to_i64(self) -> i64;
     /// `(floor(self / divisor), self mod divisor)` for a positive divisor.
     fn div_rem_floor(self, divisor: Self) -> (Self, Self);
-    /// [`Self::div_rem_floor`], in 32 bits by [`div_rem_floor_by_bits`] on cores without a
-    /// divider, for quotients expected small.
-    fn div_rem_floor_by_bits(self, divisor: Self) -> (Self, Self);
     /// Exact sign of `a * b - c * d`.
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering;
     /// `Some(a * b - c * d > 0)`, or `None` when it is zero (a cheaper form of
@@ -115,19 +112,6 @@ impl Lane for i32 {
     #[inline(always)]
     fn div_rem_floor(self, divisor: Self) -> (Self, Self) {
         floor_div_rem!(self, divisor)
-    }
-
-    #[inline(always)]
-    fn div_rem_floor_by_bits(self, divisor: Self) -> (Self, Self) {
-        // Cores without a divider (Cortex-M0/M0+: no compare-and-swap either, which is what
-        // `target_has_atomic` can tell). Not in the whole-pixel walk: there it measured 4%
-        // less per small flat triangle on Cortex-M0 but moved the packed Gouraud loop's
-        // registers, +3% per pixel.
-        if cfg!(target_has_atomic = "32") {
-            floor_div_rem!(self, divisor)
-        } else {
-            div_rem_floor_by_bits(self, divisor)
-        }
     }
 
     #[inline]
@@ -203,11 +187,6 @@ impl Lane for i64 {
         }
     }
 
-    #[inline(always)]
-    fn div_rem_floor_by_bits(self, divisor: Self) -> (Self, Self) {
-        self.div_rem_floor(divisor)
-    }
-
     #[inline]
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering {
         // Deltas of i32 coordinates reach 2^32: products reach 2^64, beyond i64.
@@ -231,6 +210,20 @@ impl Lane for i64 {
     fn in_half_open(value: Self, limit: Self) -> bool {
         // Deltas of i32 coordinates are below 2^33: the shifted value and 2 * limit fit u64.
         (value.wrapping_add(limit) as u64) < (limit as u64).wrapping_mul(2)
+    }
+}
+
+/// `(floor(value / divisor), value mod divisor)` for a positive divisor, for quotients expected
+/// small: by [`div_rem_floor_by_bits`] on cores without a divider (Cortex-M0/M0+: no
+/// compare-and-swap either, which is what `target_has_atomic` can tell), by the divide
+/// instruction elsewhere. Not in the whole-pixel walk: there it measured 4% less per small
+/// flat triangle on Cortex-M0 but moved the packed Gouraud loop's registers, +3% per pixel.
+#[inline(always)]
+pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
+    if cfg!(target_has_atomic = "32") {
+        floor_div_rem!(value, divisor)
+    } else {
+        div_rem_floor_by_bits(value, divisor)
     }
 }
 
