@@ -385,7 +385,7 @@ fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
     let divides = cfg!(target_arch = "arm") && cfg!(target_has_atomic = "32");
     match u32::try_from(divisor) {
         Ok(d @ 1..=0xFFFF) if cfg!(target_arch = "arm") => reciprocal_small(d),
-        Ok(d @ 0x1_0000..=0xFF_FFFF) if divides => reciprocal_by_bytes(d),
+        Ok(d @ 0x1_0000..=0xFF_FFFF) if divides => reciprocal_by_digits::<8>(d),
         Ok(d @ 0x1_0000..=0x7FFF_FFFF) if cfg!(target_arch = "arm") => reciprocal_by_correction(d),
         _ => (1u64 << 62) / divisor.max(1),
     }
@@ -515,7 +515,7 @@ fn scale_by(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 
 #[inline(always)]
 fn reciprocal_small(d: u32) -> u64 {
     if cfg!(target_has_atomic = "32") {
-        reciprocal_by_digits(d)
+        reciprocal_by_digits::<16>(d)
     } else {
         reciprocal_by_inverse(d)
     }
@@ -607,34 +607,18 @@ fn normalise(d: u32) -> (u32, u32) {
     (normal, shift)
 }
 
-/// `floor(2^62 / d)` for `0 < d < 2^16`, by long division of 2^62 = 2^30 * 2^32: 2^30 in one
-/// 32-bit divide, then two zero digits of base 2^16. Each partial remainder is below `d`, so
-/// each later dividend fits 32 bits and its quotient digit 16: three divides in all.
+/// `floor(2^62 / d)` for `0 < d < 2^(32 - DIGIT)`, by long division of 2^62 = 2^30 * 2^32:
+/// 2^30 in one 32-bit divide, then `32 / DIGIT` zero digits of base 2^`DIGIT`. Each partial
+/// remainder is below `d`, so each later dividend fits 32 bits: three divides in all for
+/// 16-bit digits (`d` under 2^16), five for 8-bit ones (`d` under 2^24).
 #[inline(always)]
-fn reciprocal_by_digits(d: u32) -> u64 {
+fn reciprocal_by_digits<const DIGIT: u32>(d: u32) -> u64 {
     let top = 1u32 << 30;
     let mut quotient = u64::from(top / d);
     let mut remainder = top % d;
-    for _ in 0..2 {
-        let dividend = remainder << 16;
-        quotient = (quotient << 16) | u64::from(dividend / d);
-        remainder = dividend % d;
-    }
-    quotient
-}
-
-/// `floor(2^62 / d)` for `2^16 <= d < 2^24`, by long division of 2^62 = 2^30 * 2^32: 2^30 in
-/// one 32-bit divide, then four zero digits of base 2^8 (each partial remainder is below `d`,
-/// so each later dividend fits 32 bits): five divides in all.
-#[cfg_attr(not(target_has_atomic = "32"), allow(dead_code))]
-#[inline(always)]
-fn reciprocal_by_bytes(d: u32) -> u64 {
-    let top = 1u32 << 30;
-    let mut quotient = u64::from(top / d);
-    let mut remainder = top % d;
-    for _ in 0..4 {
-        let dividend = remainder << 8;
-        quotient = (quotient << 8) | u64::from(dividend / d);
+    for _ in 0..32 / DIGIT {
+        let dividend = remainder << DIGIT;
+        quotient = (quotient << DIGIT) | u64::from(dividend / d);
         remainder = dividend % d;
     }
     quotient
@@ -1383,10 +1367,11 @@ mod tests {
                 assert_eq!(reciprocal_by_correction(wide), (1u64 << 62) / d, "{d}");
             }
             if let Ok(medium @ 0x1_0000..=0xFF_FFFF) = u32::try_from(d) {
-                assert_eq!(reciprocal_by_bytes(medium), (1u64 << 62) / d, "{d}");
+                assert_eq!(reciprocal_by_digits::<8>(medium), (1u64 << 62) / d, "{d}");
             }
             if let Ok(small @ 1..=0xFFFF) = u32::try_from(d) {
-                assert_eq!(reciprocal_by_digits(small), (1u64 << 62) / d, "{d}");
+                assert_eq!(reciprocal_by_digits::<16>(small), (1u64 << 62) / d, "{d}");
+                assert_eq!(reciprocal_by_digits::<8>(small), (1u64 << 62) / d, "{d}");
                 assert_eq!(reciprocal_by_inverse(small), (1u64 << 62) / d, "{d}");
             }
         };
