@@ -12,8 +12,10 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{mul_small, PerspectivePlanes, Planes, Stretch, TrackedPlanes},
-    texture::{Axis, Direct, Filter, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS},
+    interpolate::{mul_small, PerspectivePlanes, Planes, TrackedPlanes},
+    texture::{
+        Axis, Direct, Filter, Narrow, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
+    },
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
@@ -484,7 +486,7 @@ where
     }
 
     /// Shades `run` with the span loop of this filter and modulation, addressed by `axes`,
-    /// from coordinates `start` (2^-46 texels) and modulation factors `tint` (those of the
+    /// from coordinates `start` (in the axes' terms) and modulation factors `tint` (those of the
     /// run's start when `None`).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
@@ -492,7 +494,7 @@ where
         &self,
         (u, v): (A, A),
         (du, dv): (A::Coord, A::Coord),
-        start: [i64; 2],
+        start: (A::Coord, A::Coord),
         tint: Option<[u32; M]>,
         run: Span,
         offset: Point,
@@ -547,50 +549,30 @@ where
         })
     }
 
-    /// Shades `run`, which stays inside the texture, with this filter's and modulation's loop.
-    #[inline(always)]
-    fn shade_direct<D, const FILTER: u8, const TINT: u8>(
-        &self,
-        run: Span,
-        start: [i64; 2],
-        steps: [i64; 2],
-        tint: Option<[u32; M]>,
-        offset: Point,
-        target: &mut D,
-    ) -> Result<(), D::Error>
-    where
-        D: DrawTarget<Color = T::Color>,
-    {
-        let steps = (steps[0], steps[1]);
-        self.shade::<_, _, FILTER, TINT>((Direct, Direct), steps, start, tint, run, offset, target)
-    }
-
-    /// Shades `run` from coordinates `start` stepping by `steps` (2^-46 texels), addressed
-    /// when `inside` is false, with the loop of this filter and modulation.
+    /// Shades `run`, which stays inside the texture, from coordinates `start` stepping by
+    /// `steps`, both in `axis`'s terms, with this filter's and modulation's loop.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn shade_run<D>(
+    fn shade_inside<A, D>(
         &self,
-        run: Span,
-        start: [i64; 2],
-        steps: [i64; 2],
-        inside: bool,
+        axis: A,
+        steps: (A::Coord, A::Coord),
+        start: (A::Coord, A::Coord),
         tint: Option<[u32; M]>,
+        run: Span,
         offset: Point,
         target: &mut D,
     ) -> Result<(), D::Error>
     where
+        A: Axis,
         D: DrawTarget<Color = T::Color>,
     {
-        if !inside {
-            return self.shade_addressed(run, start, steps, tint, offset, target);
-        }
-        let (s, t) = (start, tint);
+        let (pair, s, t, o) = ((axis, axis), start, tint, offset);
         match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.shade_direct::<_, NO, NO>(run, s, steps, t, offset, target),
-            (true, false) => self.shade_direct::<_, YES, NO>(run, s, steps, t, offset, target),
-            (false, true) => self.shade_direct::<_, NO, YES>(run, s, steps, t, offset, target),
-            (true, true) => self.shade_direct::<_, YES, YES>(run, s, steps, t, offset, target),
+            (false, false) => self.shade::<_, _, NO, NO>(pair, steps, s, t, run, o, target),
+            (true, false) => self.shade::<_, _, YES, NO>(pair, steps, s, t, run, o, target),
+            (false, true) => self.shade::<_, _, NO, YES>(pair, steps, s, t, run, o, target),
+            (true, true) => self.shade::<_, _, YES, YES>(pair, steps, s, t, run, o, target),
         }
     }
 
@@ -638,6 +620,7 @@ where
         A: Axis,
         D: DrawTarget<Color = T::Color>,
     {
+        let start = (axes.0.coord(start[0]), axes.1.coord(start[1]));
         if self.bilinear {
             self.shade::<_, _, YES, EITHER>(axes, steps, start, tint, run, offset, target)
         } else {
@@ -646,7 +629,9 @@ where
     }
 
     /// Paints `run` in perspective: sub-span by sub-span, each stepped linearly between the
-    /// exact coordinates at its ends ([`PerspectivePlanes::next_sub_span`]).
+    /// exact coordinates at its ends ([`PerspectivePlanes::next_sub_span`]). Sub-spans inside
+    /// the texture step their raw 16.16 coordinates in 32 bits ([`Narrow`]), the others go
+    /// through the style's addressing.
     #[inline(never)]
     fn paint_perspective<D>(
         &self,
@@ -671,7 +656,20 @@ where
                 y: run.y,
                 len: sub_span.len,
             };
-            self.paint_linear(stretch, Some((&sub_span, tint)), offset, target)?;
+            // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
+            let inside = (0..2).all(|k| {
+                let limit = self.sub_span_limits[k];
+                (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
+            });
+            if inside {
+                let raw = |a: [i32; 2]| (a[0] as u32, a[1] as u32);
+                let (start, steps) = (raw(sub_span.start), raw(sub_span.steps));
+                self.shade_inside(Narrow, steps, start, tint, stretch, offset, target)?;
+            } else {
+                let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
+                let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
+                self.shade_addressed(stretch, start, steps, tint, offset, target)?;
+            }
         }
         Ok(())
     }
@@ -725,7 +723,7 @@ where
     {
         match self.perspective {
             Some(planes) => self.paint_perspective(planes, run, offset, target),
-            None => self.paint_linear(run, None, offset, target),
+            None => self.paint_linear(run, offset, target),
         }
     }
 }
@@ -735,44 +733,27 @@ where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
 {
-    /// Paints `run` with coordinates stepped linearly: the whole run when the mapping is
-    /// affine (`sub_span` is `None`), else one perspective sub-span with its coordinates and
-    /// modulation factors. One out-of-line copy per target of the four span loops inside the
-    /// texture, which both mappings share (a copy each cost 3.9 KB on Cortex-M0).
+    /// Paints `run` with coordinates stepped linearly (affine mapping). One out-of-line copy
+    /// per target of the four span loops inside the texture.
     #[inline(never)]
-    fn paint_linear<D>(
-        &self,
-        run: Span,
-        sub_span: Option<(&Stretch<2>, Option<[u32; M]>)>,
-        offset: Point,
-        target: &mut D,
-    ) -> Result<(), D::Error>
+    fn paint_linear<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = T::Color>,
     {
-        let (start, steps, inside, tint) = match sub_span {
-            None => {
-                let planes = &self.coordinates;
-                // The coordinates at the run's start, evaluated once for the test and the loop.
-                let start = planes.at_exact(run.x, run.y);
-                let steps = planes.planes.dx;
-                let end = core::array::from_fn(|k| {
-                    across(run.len - 1, steps[k]).and_then(|d| d.checked_add(start[k]))
-                });
-                (start, steps, self.inside(start, end), None)
-            }
-            Some((sub_span, tint)) => {
-                // Inside when both ends are: raw 16.16, negative ones wrapping to the top.
-                let inside = (0..2).all(|k| {
-                    let limit = self.sub_span_limits[k];
-                    (sub_span.start[k] as u32) < limit && (sub_span.end[k] as u32) < limit
-                });
-                let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
-                let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
-                (start, steps, inside, tint)
-            }
-        };
-        self.shade_run(run, start, steps, inside, tint, offset, target)
+        let planes = &self.coordinates;
+        // The coordinates at the run's start, evaluated once for the test and the loop.
+        let start = planes.at_exact(run.x, run.y);
+        let steps = planes.planes.dx;
+        let end = core::array::from_fn(|k| {
+            across(run.len - 1, steps[k]).and_then(|d| d.checked_add(start[k]))
+        });
+        if self.inside(start, end) {
+            let steps = (steps[0], steps[1]);
+            let start = (start[0], start[1]);
+            self.shade_inside(Direct, steps, start, None, run, offset, target)
+        } else {
+            self.shade_addressed(run, start, steps, None, offset, target)
+        }
     }
 }
 
@@ -831,8 +812,8 @@ where
 /// The per-pixel shader of a textured triangle.
 struct TexturedShader<T, A: Axis, const M: usize, const FILTER: u8, const TINT: u8> {
     sampler: Sampler<T, A>,
-    /// Coordinates at the run's first pixel, in 2^-46 texels.
-    start: [i64; 2],
+    /// Coordinates at the run's first pixel.
+    start: (A::Coord, A::Coord),
     /// Modulation factors at the run's first pixel and their steps (zero without).
     tint: ([u32; M], [u32; M]),
     /// The style's modulation, for loops whose `TINT` is `EITHER`.
@@ -865,12 +846,12 @@ where
 
     #[inline(always)]
     fn start(&self, _x: i32, _y: i32) -> Self::State {
-        let [u, v] = self.start;
+        let (u, v) = self.start;
         let (tint, tint_step) = self.tint;
         TexturedState {
             sampler: self.sampler,
-            u: self.sampler.u.coord(u),
-            v: self.sampler.v.coord(v),
+            u,
+            v,
             tint,
             tint_step,
         }

@@ -68,6 +68,47 @@ impl Axis for Direct {
     }
 }
 
+/// Addressing of coordinates known to stay inside the texture, carried in 16.16 (`u32`): for
+/// perspective sub-spans, whose coordinates and steps are raw 16.16 already. On 32-bit cores
+/// each coordinate is one register instead of two, so the span loop keeps them all in
+/// registers; the texels are those [`Direct`] gives the same coordinates.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Narrow;
+
+/// What 2^-46 texels are shifted by to give raw 16.16.
+const TO_RAW: u32 = COORDINATE_BITS - 16;
+
+impl Axis for Narrow {
+    type Coord = u32;
+
+    // The values come from raw 16.16 ones shifted up, so the shift back is exact.
+    #[inline(always)]
+    fn coord(self, value: i64) -> u32 {
+        (value >> TO_RAW) as u32
+    }
+
+    #[inline(always)]
+    fn step(self, gradient: i64) -> u32 {
+        (gradient >> TO_RAW) as u32
+    }
+
+    #[inline(always)]
+    fn advance(self, coord: u32, step: u32) -> u32 {
+        coord.wrapping_add(step)
+    }
+
+    #[inline(always)]
+    fn nearest(self, coord: u32) -> u32 {
+        coord >> 16
+    }
+
+    #[inline(always)]
+    fn linear(self, coord: u32) -> (u32, u32, u32) {
+        let texel = coord >> 16;
+        (texel, texel + 1, coord & 0xFFFF)
+    }
+}
+
 /// Addressing of coordinates that may leave the texture, clamped to its edge or repeated,
 /// chosen per triangle. One type for both modes, so that each filter has one span loop for
 /// runs that leave the texture: they are the rarer runs, and a loop per mode multiplied the
