@@ -354,9 +354,10 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     }
 
     /// The next sub-span of `walk`: up to a whole sub-span's pixels, whose last step ends on
-    /// the next one's first pixel, or on the run's last. Not generic over targets or
-    /// textures: one copy serves every perspective-correct style.
-    #[inline(never)]
+    /// the next one's first pixel, or on the run's last. Inlined into the painters' sub-span
+    /// loops: returned through memory, the stretch cost about 45 more instructions per
+    /// sub-span on Cortex-M0, and flash is no larger.
+    #[inline(always)]
     pub(crate) fn next_sub_span(&self, walk: &mut SubSpans<P, N>) -> Stretch<N> {
         let (x, start) = (walk.x, walk.start);
         let whole = walk.left > self.sub_span;
