@@ -182,6 +182,13 @@ const FIRST_GUESS: [u16; 64] = {
 /// the library's division on Cortex-M0.
 #[inline(never)]
 pub(crate) fn reciprocal(d: u32) -> u32 {
+    reciprocal_inline(d)
+}
+
+/// [`reciprocal`], inline: in [`PerspectivePlanes::attributes`] from Cortex-M3 up, where the
+/// call cost 2% of a perspective-correct triangle (on Cortex-M0 inline cost 0.5 to 1.3% more).
+#[inline(always)]
+fn reciprocal_inline(d: u32) -> u32 {
     debug_assert!(d >= 1 << 31);
     let top = d >> 16;
     let guess = u32::from(FIRST_GUESS[((top >> 9) & 63) as usize]);
@@ -405,7 +412,11 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         // unit lower, never to zero but for the most extreme ratios, which are clamped.
         let q = high_bits(values[0]).max(1) as u32;
         let (normal, zeros) = normalise(q);
-        let inverse = reciprocal(normal);
+        let inverse = if cfg!(target_has_atomic = "32") {
+            reciprocal_inline(normal)
+        } else {
+            reciprocal(normal)
+        };
         // a - a_0 = (a - a_0) q / q = weighted * inverse * 2^zeros * 2^30 / 2^63; q is below
         // 2^31, so the shift is 2 to 32.
         let shift = 63 - Q_BITS - zeros;
