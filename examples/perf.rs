@@ -13,7 +13,9 @@
 //! over each triangle's bounding box, clamped), `tex-modulated` (the same, bilinear, times
 //! Gouraud colours), `tex-nearest-repeat`, `tex-bilinear-repeat` (the texture tiled across
 //! the screen, rotated: repeat by masking), `tex-nearest-clamp` (tiled coordinates, clamped),
-//! `tex-nearest-odd` (a 63x63 texture tiled: repeat by modulo) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
+//! `tex-nearest-odd` (a 63x63 texture tiled: repeat by modulo), `tex-nearest-persp`,
+//! `tex-bilinear-persp`, `tex-modulated-persp` (perspective-correct, `w` from 1 to 4 down the
+//! screen) (this crate), `eg-flat` (embedded-graphics' own `Triangle`, same
 //! scene and framebuffer), `fill-baseline` (the flat spans, precomputed, filled by
 //! `slice::fill`: no covering at all), `coverage` (edge walking alone, nothing drawn).
 //! SCENE: `big`, `small`, `mesh`, `scene200` (200 overlapping triangles of up to a few thousand
@@ -65,6 +67,7 @@ const MODES: &[&str] = &[
     "tex-nearest-odd",
     "tex-nearest-persp",
     "tex-bilinear-persp",
+    "tex-modulated-persp",
     "eg-flat",
     "fill-baseline",
     "coverage",
@@ -163,7 +166,7 @@ where
             let kind = mode.strip_prefix("tex-").expect("mode checked in main");
             let (filter, wrap, side, tiled) = match kind {
                 "nearest" | "nearest-persp" => (Filter::Nearest, Wrap::Clamp, 64, false),
-                "bilinear" | "modulated" | "bilinear-persp" => {
+                "bilinear" | "modulated" | "bilinear-persp" | "modulated-persp" => {
                     (Filter::Bilinear, Wrap::Clamp, 64, false)
                 }
                 "nearest-repeat" => (Filter::Nearest, Wrap::Repeat, 64, true),
@@ -173,7 +176,7 @@ where
                 _ => unreachable!("mode checked in main"),
             };
             let texture = Texels::new(&texels[..(side * side) as usize], side, side).unwrap();
-            let modulated = kind == "modulated";
+            let modulated = kind.starts_with("modulated");
             let perspective = kind.ends_with("-persp");
             let options = (filter, wrap, tiled, modulated, perspective);
             texture_frame(scene, texture, options, target);
