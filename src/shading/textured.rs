@@ -543,9 +543,10 @@ where
     /// inside the texture.
     #[inline(always)]
     fn inside(&self, start: [i64; 2], end: [Option<i64>; 2]) -> bool {
+        // Unsigned: negative values wrap above every limit, so one comparison each.
         (0..2).all(|k| {
-            let limit = 0..self.limits[k];
-            limit.contains(&start[k]) && end[k].is_some_and(|end| limit.contains(&end))
+            let limit = self.limits[k] as u64;
+            (start[k] as u64) < limit && end[k].is_some_and(|end| (end as u64) < limit)
         })
     }
 
