@@ -535,14 +535,16 @@ where
         shade_span(shader, run, Point::zero(), target)
     }
 
-    /// True when coordinates from `start` to `end` (2^-46 texels; `None` if out of range) stay
-    /// inside the texture.
+    /// True when coordinates from `start` to `start + across` (2^-46 texels; `across` is
+    /// `None` if out of range) stay inside the texture.
     #[inline(always)]
-    fn inside(&self, start: [i64; 2], end: [Option<i64>; 2]) -> bool {
-        // Unsigned: negative values wrap above every limit, so one comparison each.
+    fn inside(&self, start: [i64; 2], across: [Option<i64>; 2]) -> bool {
+        // Unsigned: negative values wrap above every limit, so one comparison each. A start
+        // inside is below 2^61, so the end, wrapped to 64 bits, is below the limit exactly
+        // when the sum is: no overflow test.
         (0..2).all(|k| {
-            let limit = self.limits[k] as u64;
-            (start[k] as u64) < limit && end[k].is_some_and(|end| (end as u64) < limit)
+            let (limit, start) = (self.limits[k] as u64, start[k] as u64);
+            start < limit && across[k].is_some_and(|d| start.wrapping_add(d as u64) < limit)
         })
     }
 
@@ -741,10 +743,8 @@ where
         // The coordinates at the run's start, evaluated once for the test and the loop.
         let start = planes.at_exact(run.x, run.y);
         let steps = planes.planes.dx;
-        let end = core::array::from_fn(|k| {
-            across(run.len - 1, steps[k]).and_then(|d| d.checked_add(start[k]))
-        });
-        if self.inside(start, end) {
+        let across = steps.map(|step| across(run.len - 1, step));
+        if self.inside(start, across) {
             let steps = (steps[0], steps[1]);
             let start = (start[0], start[1]);
             self.shade_inside(Direct, steps, start, None, run, offset, target)
