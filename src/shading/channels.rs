@@ -186,6 +186,38 @@ fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
     (lanes.wrapping_mul(COPIES) >> 32) as u16
 }
 
+/// `[f(0), f(1), ..., f(N - 1)]`, written out for up to four channels, so that the per-pixel
+/// channel work stays unrolled at every optimisation level: with `opt-level = "s"` or `"z"`
+/// the loop of `core::array::from_fn` stays a loop, which on Cortex-M0 stores each channel to
+/// memory and reloads it (measured: Gouraud's `big` pixels cost 5 times as much).
+#[inline(always)]
+pub(crate) fn per_channel<T: Copy + Default, const N: usize>(
+    mut f: impl FnMut(usize) -> T,
+) -> [T; N] {
+    let mut out = [T::default(); N];
+    // Straight-line code, not a loop; `get_mut` with constant indices folds away, where plain
+    // indexing would not compile for shorter arrays (an out-of-bounds constant index is an
+    // error even where unreachable).
+    if let Some(slot) = out.get_mut(0) {
+        *slot = f(0);
+    }
+    if let Some(slot) = out.get_mut(1) {
+        *slot = f(1);
+    }
+    if let Some(slot) = out.get_mut(2) {
+        *slot = f(2);
+    }
+    if let Some(slot) = out.get_mut(3) {
+        *slot = f(3);
+    }
+    let mut k = 4;
+    while k < N {
+        out[k] = f(k);
+        k += 1;
+    }
+    out
+}
+
 macro_rules! rgb_channels {
     ($($color:ty),+) => {$(
         impl ChannelColor for $color {

@@ -5,6 +5,7 @@ use core::marker::PhantomData;
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{
+    channels::per_channel,
     paint::{drawable_style, stored, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
@@ -372,11 +373,11 @@ where
         } else {
             0
         };
-        let color = C::from_channels(values.map(|c| (c.wrapping_add(threshold) >> 16) as u8));
+        let color = C::from_channels(per_channel(|k| {
+            (values[k].wrapping_add(threshold) >> 16) as u8
+        }));
         *x = x.wrapping_add(1);
-        for k in 0..N {
-            values[k] = values[k].wrapping_add(step[k]);
-        }
+        *values = per_channel(|k| values[k].wrapping_add(step[k]));
         color
     }
 }
@@ -466,10 +467,26 @@ where
         fits
     };
 
-    /// Integer bits of channel `k` (1 to 6).
+    /// Integer bits of each channel (1 to 6).
+    const BITS: [u32; N] = {
+        let mut bits = [1; N];
+        let mut k = 0;
+        while k < N {
+            let significant = u8::BITS - C::MAX_CHANNELS[k].leading_zeros();
+            if significant > 1 {
+                bits[k] = significant;
+            }
+            k += 1;
+        }
+        bits
+    };
+
+    /// Integer bits of channel `k`: a constant, so that no build counts leading zeros per
+    /// pixel (a library routine on Cortex-M0, where `opt-level = "s"` does not unroll the
+    /// channel loop that would fold it away).
     #[inline(always)]
     fn bits(k: usize) -> u32 {
-        (u8::BITS - C::MAX_CHANNELS[k].leading_zeros()).max(1)
+        Self::BITS[k]
     }
 
     /// The lane steps of planes stepping by `steps` (raw 16.16), each rounded; once per
@@ -507,7 +524,7 @@ where
 
     #[inline(always)]
     fn next(&self, (packed, steps): &mut Self::State) -> C {
-        let channels = core::array::from_fn(|k| packed.top(k, Self::bits(k)) as u8);
+        let channels = per_channel(|k| packed.top(k, Self::bits(k)) as u8);
         packed.step(*steps);
         C::from_channels(channels)
     }
