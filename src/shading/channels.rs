@@ -122,16 +122,41 @@ pub trait ChannelColor: PixelColor {
 fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
     let (a, b) = (u32::from(opacity), 255 - u32::from(opacity));
     let (source, under) = (source.channels(), under.channels());
+    let (source, under) = (source.as_ref(), under.as_ref());
     let mut out = C::Channels::default();
-    for ((o, &s), &d) in out
-        .as_mut()
-        .iter_mut()
-        .zip(source.as_ref())
-        .zip(under.as_ref())
-    {
-        *o = div_255_rounded(u32::from(s) * a + u32::from(d) * b) as u8;
-    }
+    let slots = out.as_mut();
+    for_each_slot(slots, |k| {
+        let (s, d) = (source.get(k).copied(), under.get(k).copied());
+        let (s, d) = (u32::from(s.unwrap_or(0)), u32::from(d.unwrap_or(0)));
+        div_255_rounded(s * a + d * b) as u8
+    });
     C::from_channels(out)
+}
+
+/// Sets each element `k` of `slots` to `f(k)`: the first four in straight-line code, any others
+/// in a loop. So the per-pixel channel work stays unrolled at every optimisation level: with
+/// `opt-level = "s"` or `"z"` the loops of `array::map`, `array::from_fn` and iterators stay
+/// loops (or calls), which on Cortex-M0 store each channel to memory and reload it (measured:
+/// Gouraud's `big` pixels cost 5 times as much, bilinear ones 2.4 times). Constant indices
+/// with `get_mut` fold away once the length is known; plain indexing would not compile for
+/// shorter arrays (an out-of-bounds constant index is an error even where unreachable).
+#[inline(always)]
+fn for_each_slot<T>(slots: &mut [T], mut f: impl FnMut(usize) -> T) {
+    if let Some(value) = slots.get_mut(0) {
+        *value = f(0);
+    }
+    if let Some(value) = slots.get_mut(1) {
+        *value = f(1);
+    }
+    if let Some(value) = slots.get_mut(2) {
+        *value = f(2);
+    }
+    if let Some(value) = slots.get_mut(3) {
+        *value = f(3);
+    }
+    for k in 4..slots.len() {
+        slots[k] = f(k);
+    }
 }
 
 /// `value / 255` rounded to nearest, for `value <= 255 * 255`, without a division (a
@@ -168,23 +193,7 @@ fn blend_channels<C: ChannelColor>(corners: [C; 4], wx: u32, wy: u32) -> C {
             + corner(3) * weights[3];
         (sum >> shift) as u8
     };
-    let slots = out.as_mut();
-    // The first four straight-line (constant indices; `get_mut` folds away), any others after.
-    if let Some(value) = slots.get_mut(0) {
-        *value = blend(0);
-    }
-    if let Some(value) = slots.get_mut(1) {
-        *value = blend(1);
-    }
-    if let Some(value) = slots.get_mut(2) {
-        *value = blend(2);
-    }
-    if let Some(value) = slots.get_mut(3) {
-        *value = blend(3);
-    }
-    for k in 4..slots.len() {
-        slots[k] = blend(k);
-    }
+    for_each_slot(out.as_mut(), blend);
     C::from_channels(out)
 }
 
@@ -208,35 +217,11 @@ fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
     (lanes.wrapping_mul(COPIES) >> 32) as u16
 }
 
-/// `[f(0), f(1), ..., f(N - 1)]`, written out for up to four channels, so that the per-pixel
-/// channel work stays unrolled at every optimisation level: with `opt-level = "s"` or `"z"`
-/// the loop of `core::array::from_fn` stays a loop, which on Cortex-M0 stores each channel to
-/// memory and reloads it (measured: Gouraud's `big` pixels cost 5 times as much).
+/// `[f(0), f(1), ..., f(N - 1)]`, written out for up to four channels (see [`for_each_slot`]).
 #[inline(always)]
-pub(crate) fn per_channel<T: Copy + Default, const N: usize>(
-    mut f: impl FnMut(usize) -> T,
-) -> [T; N] {
+pub(crate) fn per_channel<T: Copy + Default, const N: usize>(f: impl FnMut(usize) -> T) -> [T; N] {
     let mut out = [T::default(); N];
-    // Straight-line code, not a loop; `get_mut` with constant indices folds away, where plain
-    // indexing would not compile for shorter arrays (an out-of-bounds constant index is an
-    // error even where unreachable).
-    if let Some(slot) = out.get_mut(0) {
-        *slot = f(0);
-    }
-    if let Some(slot) = out.get_mut(1) {
-        *slot = f(1);
-    }
-    if let Some(slot) = out.get_mut(2) {
-        *slot = f(2);
-    }
-    if let Some(slot) = out.get_mut(3) {
-        *slot = f(3);
-    }
-    let mut k = 4;
-    while k < N {
-        out[k] = f(k);
-        k += 1;
-    }
+    for_each_slot(&mut out, f);
     out
 }
 
