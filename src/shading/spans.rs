@@ -2,7 +2,7 @@
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
-use super::paint::stored;
+use super::{channels::per_channel, paint::stored};
 use crate::{coverage::Span, geometry::Shape, interpolate::Planes};
 
 /// Computes colours pixel by pixel along a span, by additions.
@@ -147,9 +147,7 @@ where
 {
     let color = shade(*position, *values);
     position.x = position.x.wrapping_add(1);
-    for k in 0..N {
-        values[k] = values[k].wrapping_add(step[k]);
-    }
+    *values = per_channel(|k| values[k].wrapping_add(step[k]));
     color
 }
 

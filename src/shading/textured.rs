@@ -5,6 +5,7 @@ use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Re
 use fixed::types::I16F16;
 
 use super::{
+    channels::per_channel,
     paint::{drawable_style, stored, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
@@ -866,9 +867,7 @@ where
         state.v = sampler.v.advance(state.v, sampler.dv);
         if holds(TINT, self.tinted) {
             let factors = state.tint;
-            for k in 0..M {
-                state.tint[k] = state.tint[k].wrapping_add(state.tint_step[k]);
-            }
+            state.tint = per_channel(|k| factors[k].wrapping_add(state.tint_step[k]));
             modulate(texel, factors)
         } else {
             texel
@@ -883,7 +882,7 @@ where
     C: ChannelColor<Channels = [u8; M]>,
 {
     let channels = texel.channels();
-    C::from_channels(core::array::from_fn(|k| {
+    C::from_channels(per_channel(|k| {
         // Interpolation may overshoot 0 or 1 by a unit; a wrapped negative factor is huge.
         let factor = (factors[k] as i32).clamp(0, 1 << 16) as u32;
         ((u32::from(channels[k]) * factor + (1 << 15)) >> 16) as u8
