@@ -345,6 +345,12 @@ impl Chain {
 /// Coverage (units of [`FULL`], 0 to `FULL`) as an opacity, 0 to 255, rounded.
 #[inline(always)]
 fn opacity(coverage: i64) -> u8 {
+    opacity32(coverage as i32)
+}
+
+/// [`opacity`] of a coverage already in `i32` (0 to `FULL`, which fits).
+#[inline(always)]
+fn opacity32(coverage: i32) -> u8 {
     // 16 bits of coverage are plenty; the product then fits 32 bits.
     let coverage = (coverage >> (2 * FRAC - 16)) as u32;
     ((coverage * 255 + (1 << 15)) >> 16) as u8
@@ -366,16 +372,18 @@ fn lone_piece_columns<K: CoverageSink>(
     // Shifts, not `div_euclid` (whose remainder costs a 64-bit multiply on Cortex-M0).
     let first = piece.left >> FRAC;
     let end = (piece.right + ONE - 1) >> FRAC;
-    let mut put = |column: i64, area_left: i64| -> Result<(), K::Error> {
+    let put = |run: &mut EdgeRun, sink: &mut K, column: i64, area_left: i64| {
         let coverage = if left_side {
             rows * ONE - area_left
         } else {
             area_left
         };
         if column >= clip.0 && column < clip.1 {
-            run.push(column, opacity(coverage.clamp(0, FULL)), sink)?;
+            // Inside the clip, whose columns are i32.
+            run.push(column as i32, opacity(coverage.clamp(0, FULL)), sink)
+        } else {
+            Ok(())
         }
-        Ok(())
     };
     // The first and the last column, in 32-bit arithmetic: within a column of the piece's
     // ends (`Piece::area_left_of` without its general cases).
@@ -388,12 +396,14 @@ fn lone_piece_columns<K: CoverageSink>(
     if end - first == 1 {
         // Inside one column: a trapezoid the piece's height, its mean depth into the column.
         let depth = (piece.left + piece.right - 2 * first_x) as i32;
-        return put(first, i64::from(rows32 * depth / 2));
+        return put(run, sink, first, i64::from(rows32 * depth / 2));
     }
     let leave = first_x + ONE;
     let inside = piece.rows_left_of(leave) as i32;
     let depth = (piece.left + leave - 2 * first_x) as i32;
     put(
+        run,
+        sink,
         first,
         i64::from((rows32 - inside) * ONE as i32 + inside * depth / 2),
     )?;
@@ -403,7 +413,7 @@ fn lone_piece_columns<K: CoverageSink>(
         i64::from((rows32 - before) * (piece.right - last_x) as i32 / 2)
     };
     if end - first == 2 {
-        return put(end - 1, last());
+        return put(run, sink, end - 1, last());
     }
     // Middle columns: rows left of the column's left side, in 2^-32 units, step by a column's
     // worth each time.
@@ -424,15 +434,25 @@ fn lone_piece_columns<K: CoverageSink>(
         } else {
             across.saturating_mul(per_x)
         };
-        for column in from..to {
+        // In 32 bits (64-bit arithmetic is two instructions a step on 32-bit cores): rows are
+        // at most ONE, areas at most FULL, and the columns lie inside the clip.
+        let (piece_rows, strip) = (piece.rows as u32, (rows * ONE) as i32);
+        let whole = piece_rows as i32 * ONE as i32;
+        for column in from as i32..to as i32 {
             let rows_after = rows_before.saturating_add(per_column);
-            let before = ((rows_before >> 32) as i64).min(piece.rows);
-            let inside = ((rows_after >> 32) as i64).min(piece.rows);
-            put(column, piece.rows * ONE - (inside + before) * (ONE / 2))?;
+            let before = ((rows_before >> 32) as u32).min(piece_rows);
+            let inside = ((rows_after >> 32) as u32).min(piece_rows);
+            let area_left = whole - (inside + before) as i32 * (ONE as i32 / 2);
+            let coverage = if left_side {
+                strip - area_left
+            } else {
+                area_left
+            };
+            run.push(column, opacity32(coverage.clamp(0, FULL as i32)), sink)?;
             rows_before = rows_after;
         }
     }
-    put(end - 1, last())
+    put(run, sink, end - 1, last())
 }
 
 /// Emits the columns `from..to` of the row within `clip` (columns `clip.0..clip.1`), each
@@ -445,7 +465,8 @@ fn boundary_columns<K: CoverageSink>(
     sink: &mut K,
 ) -> Result<(), K::Error> {
     for column in from.max(clip.0)..to.min(clip.1) {
-        run.push(column, opacity(bounds.coverage(column * ONE)), sink)?;
+        // Inside the clip, whose columns are i32.
+        run.push(column as i32, opacity(bounds.coverage(column * ONE)), sink)?;
     }
     Ok(())
 }
@@ -467,7 +488,8 @@ const RUN: usize = 32;
 
 /// Gathers a row's consecutive edge pixels, so that each run reaches the sink in one call.
 struct EdgeRun {
-    x: i64,
+    /// The first pixel's column (inside the clip, whose columns are i32).
+    x: i32,
     y: i32,
     len: usize,
     coverages: [u8; RUN],
@@ -487,7 +509,7 @@ impl EdgeRun {
     #[inline(always)]
     fn push<K: CoverageSink>(
         &mut self,
-        column: i64,
+        column: i32,
         coverage: u8,
         sink: &mut K,
     ) -> Result<(), K::Error> {
@@ -495,7 +517,7 @@ impl EdgeRun {
             // Uncovered pixels are not drawn: a display may not be read, only written.
             return self.flush(sink);
         }
-        if self.len == RUN || (self.len > 0 && column != self.x + self.len as i64) {
+        if self.len == RUN || (self.len > 0 && column != self.x.wrapping_add(self.len as i32)) {
             self.flush(sink)?;
         }
         if self.len == 0 {
@@ -510,10 +532,8 @@ impl EdgeRun {
     #[inline]
     fn flush<K: CoverageSink>(&mut self, sink: &mut K) -> Result<(), K::Error> {
         if self.len > 0 {
-            // Within the clip, whose columns are i32.
-            let x = self.x as i32;
             let len = core::mem::replace(&mut self.len, 0);
-            sink.edge(x, self.y, &self.coverages[..len])?;
+            sink.edge(self.x, self.y, &self.coverages[..len])?;
         }
         Ok(())
     }
