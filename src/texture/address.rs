@@ -250,6 +250,34 @@ mod tests {
         }
     }
 
+    /// 32-bit coordinates pick the texels and fractions the 64-bit ones do, stepped alike, for
+    /// raw 16.16 values inside a texture of up to 2^15 texels.
+    #[test]
+    fn narrow_coordinates_agree_with_direct_ones() {
+        let mut rng = crate::test_rng::XorShift(0x1234_5678_9ABC_DEF1);
+        for _ in 0..20_000 {
+            let start = (rng.next_u64() % (1 << 31)) as u32;
+            let step = (rng.next_u64() % (1 << 18)) as u32;
+            let (mut narrow, mut direct) = (
+                Narrow.coord(i64::from(start) << TO_RAW),
+                Direct.coord(i64::from(start) << TO_RAW),
+            );
+            let (narrow_step, direct_step) = (
+                Narrow.step(i64::from(step) << TO_RAW),
+                Direct.step(i64::from(step) << TO_RAW),
+            );
+            for _ in 0..16 {
+                if i64::from(narrow) >= 1 << 31 {
+                    break;
+                }
+                assert_eq!(Narrow.nearest(narrow), Direct.nearest(direct));
+                assert_eq!(Narrow.linear(narrow), Direct.linear(direct));
+                narrow = Narrow.advance(narrow, narrow_step);
+                direct = Direct.advance(direct, direct_step);
+            }
+        }
+    }
+
     /// Stepping wraps exactly like the sum of the values, and clamps like it.
     #[test]
     fn stepping_wraps_like_the_sum() {
