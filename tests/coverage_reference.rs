@@ -224,3 +224,56 @@ fn fixed_cases_match_reference() {
         check_case(window, v).unwrap();
     }
 }
+
+/// A sink's first error stops the walk and comes back, on the fast path and on the wide ones
+/// (whole-pixel and sub-pixel vertices beyond the 32-bit range), after exactly the spans
+/// before it.
+#[test]
+fn the_first_error_stops_every_walk() {
+    use fixed::types::I24F8;
+    use trirast::{
+        coverage::for_each_subpixel_span,
+        geometry::{SubPixelTriangle, SubPoint},
+        FillRule,
+    };
+    let window = Rectangle::new(Point::zero(), Size::new(64, 64));
+    let far = FAST_LIMIT + 1000;
+    let whole = [
+        Triangle::new(Point::new(0, 0), Point::new(60, 10), Point::new(5, 60)),
+        Triangle::new(
+            Point::new(-far, -far),
+            Point::new(far, 0),
+            Point::new(0, far),
+        ),
+    ];
+    for triangle in whole {
+        let mut seen = 0;
+        let result = for_each_span(&triangle, FillRule::TopLeft, &window, |_| {
+            seen += 1;
+            if seen == 3 {
+                Err(seen)
+            } else {
+                Ok(())
+            }
+        });
+        assert_eq!((result, seen), (Err(3), 3), "{triangle:?}");
+    }
+    let at = |x: i32, y: i32| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
+    let big = i32::MAX / 2;
+    let subpixel = [
+        SubPixelTriangle::new(at(0, 0), at(60 << 8, 10 << 8), at(5 << 8, 60 << 8)),
+        SubPixelTriangle::new(at(-big, -big), at(big, 0), at(0, big)),
+    ];
+    for triangle in subpixel {
+        let mut seen = 0;
+        let result = for_each_subpixel_span(&triangle, FillRule::TopLeft, &window, |_| {
+            seen += 1;
+            if seen == 3 {
+                Err(seen)
+            } else {
+                Ok(())
+            }
+        });
+        assert_eq!((result, seen), (Err(3), 3), "{triangle:?}");
+    }
+}

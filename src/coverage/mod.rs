@@ -325,17 +325,20 @@ pub fn walk<K: SpanSink + ?Sized>(
     if fits_fast_path(&sorted) {
         walk_fast(sorted, rule, clip, sink)
     } else {
-        // Rare: out of line, and type-erased, so there is one wide walk per error type rather
-        // than one per style and target. Scalars, not references: the cold call should not
-        // force the triangle and window into memory on the fast path.
+        // Rare: out of line, and type-erased, so there is one wide walk for every style,
+        // target and error type (the sink's error is kept here; the walk only stops). Scalars,
+        // not references: the cold call should not force the triangle and window into memory
+        // on the fast path.
         let [a, b, c] = sorted;
         let (tl, size) = (clip.top_left, clip.size);
-        walk_wide(
+        let mut error = None;
+        let _ = walk_wide(
             [a.x, a.y, b.x, b.y, c.x, c.y],
             rule,
             [tl.x, tl.y, size.width as i32, size.height as i32],
-            &mut |span| sink.span(span),
-        )
+            &mut |span| sink.span(span).map_err(|e| error = Some(e)),
+        );
+        error.map_or(Ok(()), Err)
     }
 }
 
@@ -506,12 +509,12 @@ fn walk_fast<K: SpanSink + ?Sized>(
 /// computed exactly from the edge's start (no stepping state), out of line and type-erased.
 #[inline(never)]
 #[cold]
-fn walk_wide<E>(
+fn walk_wide(
     v: [i32; 6],
     rule: FillRule,
     clip: [i32; 4],
-    sink: &mut dyn FnMut(Span) -> Result<(), E>,
-) -> Result<(), E> {
+    sink: &mut dyn FnMut(Span) -> Result<(), ()>,
+) -> Result<(), ()> {
     let sorted = [
         Point::new(v[0], v[1]),
         Point::new(v[2], v[3]),

@@ -208,11 +208,14 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
     if inside < 1 << 31 && bottom.1 - top.1 < 1 << 23 {
         walk_in::<i32, K>([top, middle, bottom], rule, clip, sink)
     } else {
-        // Rare: out of line and type-erased, one copy per error type.
+        // Rare: out of line and type-erased, one copy for every sink (its error is kept
+        // here; the walk only stops).
         let wide = |(x, y): (i32, i32)| (i64::from(x), i64::from(y));
-        walk_wide([top, middle, bottom].map(wide), rule, clip, &mut |span| {
-            sink.span(span)
-        })
+        let mut error = None;
+        let _ = walk_wide([top, middle, bottom].map(wide), rule, clip, &mut |span| {
+            sink.span(span).map_err(|e| error = Some(e))
+        });
+        error.map_or(Ok(()), Err)
     }
 }
 
@@ -221,12 +224,12 @@ const NARROW_LIMIT: i32 = 1 << 30;
 
 /// [`walk_in`] in 64-bit arithmetic, for triangles beyond the 32-bit range.
 #[inline(never)]
-fn walk_wide<E>(
+fn walk_wide(
     vertices: [(i64, i64); 3],
     rule: FillRule,
     clip: &Rectangle,
-    sink: &mut dyn SpanSink<Error = E>,
-) -> Result<(), E> {
+    sink: &mut dyn SpanSink<Error = ()>,
+) -> Result<(), ()> {
     walk_in::<i64, _>(vertices, rule, clip, sink)
 }
 
