@@ -246,9 +246,12 @@ fn the_first_error_stops_every_walk() {
             Point::new(0, far),
         ),
     ];
-    for triangle in whole {
+    // Counts the spans a walk hands on, failing at the third: the walk must return that error
+    // and hand on nothing after it.
+    type Sink<'a> = dyn FnMut(Span) -> Result<(), u32> + 'a;
+    let stops_at_third = |walk: &mut dyn FnMut(&mut Sink) -> Result<(), u32>| {
         let mut seen = 0;
-        let result = for_each_span(&triangle, FillRule::TopLeft, &window, |_| {
+        let result = walk(&mut |_| {
             seen += 1;
             if seen == 3 {
                 Err(seen)
@@ -256,7 +259,12 @@ fn the_first_error_stops_every_walk() {
                 Ok(())
             }
         });
-        assert_eq!((result, seen), (Err(3), 3), "{triangle:?}");
+        (result, seen)
+    };
+    for triangle in whole {
+        let spans =
+            stops_at_third(&mut |sink| for_each_span(&triangle, FillRule::TopLeft, &window, sink));
+        assert_eq!(spans, (Err(3), 3), "{triangle:?}");
     }
     let at = |x: i32, y: i32| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
     let big = i32::MAX / 2;
@@ -265,15 +273,9 @@ fn the_first_error_stops_every_walk() {
         SubPixelTriangle::new(at(-big, -big), at(big, 0), at(0, big)),
     ];
     for triangle in subpixel {
-        let mut seen = 0;
-        let result = for_each_subpixel_span(&triangle, FillRule::TopLeft, &window, |_| {
-            seen += 1;
-            if seen == 3 {
-                Err(seen)
-            } else {
-                Ok(())
-            }
+        let spans = stops_at_third(&mut |sink| {
+            for_each_subpixel_span(&triangle, FillRule::TopLeft, &window, sink)
         });
-        assert_eq!((result, seen), (Err(3), 3), "{triangle:?}");
+        assert_eq!(spans, (Err(3), 3), "{triangle:?}");
     }
 }
