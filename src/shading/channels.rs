@@ -124,10 +124,8 @@ fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
     let (source, under) = (source.channels(), under.channels());
     let (source, under) = (source.as_ref(), under.as_ref());
     let mut out = C::Channels::default();
-    let slots = out.as_mut();
-    for_each_slot(slots, |k| {
-        let (s, d) = (source.get(k).copied(), under.get(k).copied());
-        let (s, d) = (u32::from(s.unwrap_or(0)), u32::from(d.unwrap_or(0)));
+    for_each_slot(out.as_mut(), |k| {
+        let (s, d) = (u32::from(source[k]), u32::from(under[k]));
         div_255_rounded(s * a + d * b) as u8
     });
     C::from_channels(out)

@@ -16,6 +16,7 @@ use crate::{
     interpolate::{mul_small, PerspectivePlanes, Planes, TrackedPlanes},
     texture::{
         Axis, Direct, Filter, Narrow, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
+        RAW_SHIFT,
     },
 };
 
@@ -482,7 +483,7 @@ where
             addressing,
             limits: [reach(size.width), reach(size.height)],
             sub_span_limits: [reach(size.width), reach(size.height)]
-                .map(|limit| (limit >> TO_COORDINATE) as u32),
+                .map(|limit| (limit >> RAW_SHIFT) as u32),
         }
     }
 
@@ -666,7 +667,7 @@ where
                 let (start, steps) = (raw(sub_span.start), raw(sub_span.steps));
                 self.shade_inside(Narrow, steps, start, tint, stretch, offset, target)?;
             } else {
-                let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << TO_COORDINATE);
+                let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << RAW_SHIFT);
                 let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
                 self.shade_addressed(stretch, start, steps, tint, offset, target)?;
             }
@@ -674,9 +675,6 @@ where
         Ok(())
     }
 }
-
-/// From raw 16.16 coordinates to the 2^-46 texels the span loops step.
-const TO_COORDINATE: u32 = COORDINATE_BITS - 16;
 
 /// `steps * gradient`, or `None` if it might not fit `i64`. One 64 x 16-bit multiply for runs
 /// under 2^16 pixels and gradients under 2^47 (two texels per pixel), whose product fits: a

@@ -456,9 +456,9 @@ fn fill_run<S: Copy>(run: &mut [S], value: S) {
     }
 }
 
-/// [`fill_run`] for runs of eight elements or more, out of line: inlined, its loop keeps
-/// registers busy in the row loops of every triangle, and tiny triangles pay for spans they
-/// never have.
+/// [`fill_run`] for runs over 32 elements (it serves any of eight or more), out of line:
+/// inlined, its loop keeps registers busy in the row loops of every triangle, and tiny
+/// triangles pay for spans they never have.
 #[inline(never)]
 fn fill_eights<S: Copy>(run: &mut [S], value: S) {
     let n = run.len();

@@ -75,8 +75,8 @@ impl Axis for Direct {
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct Narrow;
 
-/// What 2^-46 texels are shifted by to give raw 16.16.
-const TO_RAW: u32 = COORDINATE_BITS - 16;
+/// The shift between raw 16.16 coordinates and the 2^-46 texels the span loops step.
+pub(crate) const RAW_SHIFT: u32 = COORDINATE_BITS - 16;
 
 impl Axis for Narrow {
     type Coord = u32;
@@ -84,12 +84,12 @@ impl Axis for Narrow {
     // The values come from raw 16.16 ones shifted up, so the shift back is exact.
     #[inline(always)]
     fn coord(self, value: i64) -> u32 {
-        (value >> TO_RAW) as u32
+        (value >> RAW_SHIFT) as u32
     }
 
     #[inline(always)]
     fn step(self, gradient: i64) -> u32 {
-        (gradient >> TO_RAW) as u32
+        (gradient >> RAW_SHIFT) as u32
     }
 
     #[inline(always)]
@@ -259,12 +259,12 @@ mod tests {
             let start = (rng.next_u64() % (1 << 31)) as u32;
             let step = (rng.next_u64() % (1 << 18)) as u32;
             let (mut narrow, mut direct) = (
-                Narrow.coord(i64::from(start) << TO_RAW),
-                Direct.coord(i64::from(start) << TO_RAW),
+                Narrow.coord(i64::from(start) << RAW_SHIFT),
+                Direct.coord(i64::from(start) << RAW_SHIFT),
             );
             let (narrow_step, direct_step) = (
-                Narrow.step(i64::from(step) << TO_RAW),
-                Direct.step(i64::from(step) << TO_RAW),
+                Narrow.step(i64::from(step) << RAW_SHIFT),
+                Direct.step(i64::from(step) << RAW_SHIFT),
             );
             for _ in 0..16 {
                 if i64::from(narrow) >= 1 << 31 {
