@@ -240,9 +240,21 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
             let (da1, da2) = (a1 - a0, a2 - a0);
-            let [nx, ny] = numerators(da1, da2, e);
-            dx[k] = gradient(nx);
-            dy[k] = gradient(ny);
+            // Whole values take 64-bit arithmetic where the shift allows (SETUP up to 32), on
+            // cores without a 64-bit multiply (see `scale_whole`).
+            let whole = if cfg!(not(target_has_atomic = "32")) && shift >= 46 {
+                whole_numerators(da1, da2, e)
+            } else {
+                None
+            };
+            if let Some([wx, wy]) = whole {
+                dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
+                dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
+            } else {
+                let [nx, ny] = numerators(da1, da2, e);
+                dx[k] = gradient(nx);
+                dy[k] = gradient(ny);
+            }
             base[k] = (a0 + bias) << (SETUP - STEP_BITS);
         }
         Some(Self::from_parts(origin, base, dx, dy))
@@ -692,6 +704,49 @@ fn wide_product(magnitude: u64, reciprocal: u64) -> u128 {
     u128::from(widening_mul(lower, reciprocal_low))
         + (middle << 32)
         + (u128::from(widening_mul(upper, reciprocal_high)) << 64)
+}
+
+/// The gradient numerators of [`numerators`] divided by 2^16, in 32-bit products, when both
+/// value deltas are whole (multiples of 2^16, as colours and depths are) and below 2^15 in
+/// magnitude (every colour channel; depths less than half their range apart): each product
+/// is then below 2^30 in magnitude and their difference below 2^31. `None` otherwise.
+#[inline(always)]
+fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
+    #[allow(clippy::verbose_bit_mask)] // One AND; counting zeros is a library call on M0.
+    let small = |d: i64| d & 0xFFFF == 0 && (d >> 16).unsigned_abs() < 1 << 15;
+    if !small(da1) || !small(da2) {
+        return None;
+    }
+    let [ex1, ey1, ex2, ey2] = e;
+    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
+    Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
+}
+
+/// [`scale_split`] of the numerator `whole * 2^16`, bit for bit, in 64-bit arithmetic, for
+/// shifts of 46 to 48: the magnitude times the reciprocal is `A * 2^32 + B` from two
+/// 32 x 32 -> 64-bit products, and with `s = shift - 16` (30 to 32)
+/// `floor((A * 2^32 + B + c) / 2^s)` is `A * 2^(32 - s) + floor((B + c) / 2^s)`. Rounding
+/// half up of a negative product `-P` is `-floor((P + 2^(s - 1) - 1) / 2^s)`. On Cortex-M0
+/// the 128-bit sums, negation and shift it replaces cost about 100 instructions per gradient.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(always)]
+fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    let s = shift - 16;
+    let magnitude = whole.unsigned_abs();
+    // `A * 2^(32 - s)` as one product: the reciprocal's upper word is below 2^30, so shifted
+    // it still fits 32 bits (shifting the 64-bit product instead became a 64-bit multiply, a
+    // library call on Cortex-M0).
+    let high = widening_mul(magnitude, ((reciprocal >> 32) as u32) << (32 - s));
+    let low = widening_mul(magnitude, reciprocal as u32);
+    let below = (whole < 0) != negative;
+    let half = 1u64 << (s - 1);
+    // `low` is below 2^31 * 2^32: adding half a unit cannot carry out.
+    let quotient = high.wrapping_add((low + if below { half - 1 } else { half }) >> s);
+    if below {
+        quotient.wrapping_neg() as i64
+    } else {
+        quotient as i64
+    }
 }
 
 /// `floor(g * f / 256)` for `0 <= f < 256`, wrapping, without a wider product: on cores
@@ -1460,6 +1515,74 @@ mod tests {
                     scale_wide(numerator, reciprocal, negative, shift),
                     "{numerator} {reciprocal} {negative} {shift}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn whole_scaling_is_the_128_bit_one() {
+        // Whole numerators (as `whole_numerators` gives: below 2^31 in magnitude), reciprocals
+        // below 2^62, the shifts of 32-bit setups and up to 48.
+        let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
+        let mut next = || rng.next_u64();
+        let edges = [0, 1, -1, i32::MAX, -i32::MAX, 255 * 32767, -255 * 32767];
+        // Products exactly half a unit above a multiple (2^29 to 2^31 times an odd whole)
+        // tell rounding half up of negative products from rounding away.
+        let reciprocals = [
+            0,
+            1,
+            (1 << 32) - 1,
+            1 << 32,
+            (1 << 62) - 1,
+            1 << 61,
+            1 << 29,
+            1 << 30,
+            1 << 31,
+            (5 << 40) + (1 << 29),
+        ];
+        for round in 0..200_000 {
+            let whole = match round % 4 {
+                0 => edges[(next() % edges.len() as u64) as usize],
+                _ => (next() >> (33 + next() % 31)) as i32 * if next() & 1 == 0 { 1 } else { -1 },
+            };
+            let reciprocal = match round % 3 {
+                0 => reciprocals[(next() % reciprocals.len() as u64) as usize],
+                _ => next() >> (2 + next() % 40),
+            };
+            let negative = next() & 1 == 0;
+            for shift in [46, 47, 48] {
+                let numerator = i64::from(whole) << 16;
+                assert_eq!(
+                    scale_whole(whole, reciprocal, negative, shift),
+                    scale_wide(numerator, reciprocal, negative, shift),
+                    "{whole} {reciprocal} {negative} {shift}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn whole_numerators_are_the_64_bit_ones_shifted() {
+        let whole = [0i64, 1, -1, 255, -255, 0x7FFF, -0x7FFF];
+        let other = [0x8000i64 << 16, -0x8000 << 16, 1, 0xFFFF, 1 << 40];
+        let sides = [0i32, 1, -1, 7, -300, (1 << 15) - 1, -(1 << 15) + 1];
+        for e in [
+            [sides[5], sides[6], sides[3], sides[4]],
+            [sides[1], sides[0], sides[2], sides[5]],
+            [sides[6], sides[6], sides[5], sides[5]],
+            [sides[5], sides[5], sides[6], sides[6]],
+        ] {
+            for &l1 in &whole {
+                for &l2 in &whole {
+                    let (da1, da2) = (l1 << 16, l2 << 16);
+                    let want = numerators_wide(da1, da2, e).map(|n| n >> 16);
+                    let got = whole_numerators(da1, da2, e).map(|n| n.map(i64::from));
+                    assert_eq!(got, Some(want), "{l1} {l2} {e:?}");
+                }
+                for &d in &other {
+                    assert_eq!(whole_numerators(l1 << 16, d, e), None, "{l1} {d}");
+                    assert_eq!(whole_numerators(d, l1 << 16, e), None, "{d} {l1}");
+                }
             }
         }
     }
