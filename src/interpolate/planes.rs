@@ -240,9 +240,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
             let (da1, da2) = (a1 - a0, a2 - a0);
-            // Whole values take 64-bit arithmetic where the shift allows (SETUP up to 32), on
-            // cores without a 64-bit multiply (see `scale_whole`).
-            let whole = if cfg!(not(target_has_atomic = "32")) && shift >= 46 {
+            // Whole values take 64-bit arithmetic on cores without a 64-bit multiply (see
+            // `scale_whole`).
+            let whole = if cfg!(not(target_has_atomic = "32")) {
                 whole_numerators(da1, da2, e)
             } else {
                 None
@@ -723,20 +723,28 @@ fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
 }
 
 /// [`scale_split`] of the numerator `whole * 2^16`, bit for bit, in 64-bit arithmetic, for
-/// shifts of 46 to 48: the magnitude times the reciprocal is `A * 2^32 + B` from two
-/// 32 x 32 -> 64-bit products, and with `s = shift - 16` (30 to 32)
-/// `floor((A * 2^32 + B + c) / 2^s)` is `A * 2^(32 - s) + floor((B + c) / 2^s)`. Rounding
-/// half up of a negative product `-P` is `-floor((P + 2^(s - 1) - 1) / 2^s)`. On Cortex-M0
-/// the 128-bit sums, negation and shift it replaces cost about 100 instructions per gradient.
+/// shifts of 32 to 48 (every setup precision, SETUP 16 to 46): the magnitude times the
+/// reciprocal is `A * 2^32 + B` from 32 x 32 -> 64-bit products, and with `s = shift - 16`
+/// (16 to 32) `floor((A * 2^32 + B + c) / 2^s)` is `A * 2^(32 - s) + floor((B + c) / 2^s)`,
+/// of which only the low 64 bits matter. Rounding half up of a negative product `-P` is
+/// `-floor((P + 2^(s - 1) - 1) / 2^s)`. On Cortex-M0 the 128-bit sums, negation and shift it
+/// replaces cost about 100 instructions per gradient.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(always)]
 fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     let s = shift - 16;
     let magnitude = whole.unsigned_abs();
-    // `A * 2^(32 - s)` as one product: the reciprocal's upper word is below 2^30, so shifted
-    // it still fits 32 bits (shifting the 64-bit product instead became a 64-bit multiply, a
-    // library call on Cortex-M0).
-    let high = widening_mul(magnitude, ((reciprocal >> 32) as u32) << (32 - s));
+    // `A * 2^(32 - s)` from the reciprocal's upper word (below 2^30) shifted first: shifting
+    // the 64-bit product became a 64-bit multiply, a library call on Cortex-M0. Shifted by up
+    // to 2 it fits 32 bits; further, its part above 32 bits only reaches the result's upper
+    // word, through a 32-bit product.
+    let upper = (reciprocal >> 32) << (32 - s);
+    let high = if s >= 30 {
+        widening_mul(magnitude, upper as u32)
+    } else {
+        widening_mul(magnitude, upper as u32)
+            .wrapping_add(u64::from(magnitude.wrapping_mul((upper >> 32) as u32)) << 32)
+    };
     let low = widening_mul(magnitude, reciprocal as u32);
     let below = (whole < 0) != negative;
     let half = 1u64 << (s - 1);
@@ -1522,11 +1530,11 @@ mod tests {
     #[test]
     fn whole_scaling_is_the_128_bit_one() {
         // Whole numerators (as `whole_numerators` gives: below 2^31 in magnitude), reciprocals
-        // below 2^62, the shifts of 32-bit setups and up to 48.
+        // below 2^62, shifts of every setup precision (46 and 32 are SETUP 32 and 46).
         let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
         let mut next = || rng.next_u64();
         let edges = [0, 1, -1, i32::MAX, -i32::MAX, 255 * 32767, -255 * 32767];
-        // Products exactly half a unit above a multiple (2^29 to 2^31 times an odd whole)
+        // Products exactly half a unit above a multiple (2^15 to 2^31 times an odd whole)
         // tell rounding half up of negative products from rounding away.
         let reciprocals = [
             0,
@@ -1535,10 +1543,13 @@ mod tests {
             1 << 32,
             (1 << 62) - 1,
             1 << 61,
+            1 << 15,
+            1 << 21,
             1 << 29,
             1 << 30,
             1 << 31,
             (5 << 40) + (1 << 29),
+            (7 << 50) + (1 << 15),
         ];
         for round in 0..200_000 {
             let whole = match round % 4 {
@@ -1550,7 +1561,7 @@ mod tests {
                 _ => next() >> (2 + next() % 40),
             };
             let negative = next() & 1 == 0;
-            for shift in [46, 47, 48] {
+            for shift in [32, 38, 45, 46, 47, 48] {
                 let numerator = i64::from(whole) << 16;
                 assert_eq!(
                     scale_whole(whole, reciprocal, negative, shift),
