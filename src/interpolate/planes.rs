@@ -712,13 +712,18 @@ fn wide_product(magnitude: u64, reciprocal: u64) -> u128 {
 /// is then below 2^30 in magnitude and their difference below 2^31. `None` otherwise.
 #[inline(always)]
 fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
+    // Whole and below 2^15 in magnitude: a multiple of 2^16 that fits 32 bits, but i32::MIN
+    // (compared in 32-bit words: 64-bit shifts and negation are long code on Cortex-M0).
     #[allow(clippy::verbose_bit_mask)] // One AND; counting zeros is a library call on M0.
-    let small = |d: i64| d & 0xFFFF == 0 && (d >> 16).unsigned_abs() < 1 << 15;
+    let small = |d: i64| {
+        let t = d as i32;
+        i64::from(t) == d && t & 0xFFFF == 0 && t != i32::MIN
+    };
     if !small(da1) || !small(da2) {
         return None;
     }
     let [ex1, ey1, ex2, ey2] = e;
-    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
+    let (l1, l2) = (da1 as i32 >> 16, da2 as i32 >> 16);
     Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
 }
 
@@ -739,13 +744,21 @@ fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     // to 2 it fits 32 bits; further, its part above 32 bits only reaches the result's upper
     // word, through a 32-bit product.
     let upper = (reciprocal >> 32) << (32 - s);
+    // Small triangles' numerators are below 2^16: two multiplies per product, not four.
+    let product = |b: u32| {
+        if magnitude < 1 << 16 {
+            (u64::from(magnitude * (b >> 16)) << 16) + u64::from(magnitude * (b & 0xFFFF))
+        } else {
+            widening_mul(magnitude, b)
+        }
+    };
     let high = if s >= 30 {
-        widening_mul(magnitude, upper as u32)
+        product(upper as u32)
     } else {
-        widening_mul(magnitude, upper as u32)
+        product(upper as u32)
             .wrapping_add(u64::from(magnitude.wrapping_mul((upper >> 32) as u32)) << 32)
     };
-    let low = widening_mul(magnitude, reciprocal as u32);
+    let low = product(reciprocal as u32);
     let below = (whole < 0) != negative;
     let half = 1u64 << (s - 1);
     // `low` is below 2^31 * 2^32: adding half a unit cannot carry out.
