@@ -1554,6 +1554,31 @@ mod tests {
                 );
             }
         }
+        // Words at their largest, where the low product plus the rounding carries into the
+        // middle word, and exact halves.
+        let words = [
+            (1 << 32) - 1,
+            (1 << 62) - 1,
+            (1 << 48) + (1 << 32) - 1,
+            ((1 << 30) - 1) << 32,
+            1 << 45,
+            3 << 31,
+        ];
+        for &m in &words {
+            for &r in &words {
+                for numerator in [m as i64, -(m as i64), (m as i64) & !0xFFFF] {
+                    for negative in [false, true] {
+                        for shift in [17, 24, 31, 32, 33, 38, 46, 48] {
+                            assert_eq!(
+                                scale_split(numerator, r, negative, shift),
+                                scale_wide(numerator, r, negative, shift),
+                                "{numerator} {r} {negative} {shift}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]
