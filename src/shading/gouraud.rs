@@ -525,8 +525,8 @@ where
     /// instructions with the carry on 32-bit cores) moves every channel. Stepped as two words
     /// instead, the compiler reached the pixels of each 4x unrolled trip by offsets from the
     /// first, loaded from memory on Cortex-M0 (measured on `big`: Cortex-M4F 13.6 -> 11.0
-    /// instructions per pixel, Cortex-M0 20.7 -> 20.0; x86-64, whose 64-bit add needs no
-    /// carry, 8.3 -> 9.6, within its budget).
+    /// instructions per pixel, Cortex-M0 20.7 -> 20.0; x86-64 8.3 -> 9.6, within its
+    /// budget).
     type State = (u64, u64);
 
     #[inline(always)]
