@@ -481,7 +481,8 @@ pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
         return value.wrapping_mul(i64::from(small));
     }
     let (high, low) = ((value >> 32) as u32, value as u32);
-    let low = widening_mul(low, small);
+    // `small` below 2^16: the low word's product from two 16-bit multiplies, not four.
+    let low = (u64::from((low >> 16) * small) << 16) + u64::from((low & 0xFFFF) * small);
     (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
 }
 
