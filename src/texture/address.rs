@@ -165,14 +165,19 @@ impl Axis for Wrapped {
             // Power-of-two side: the remainder is the low bits, negative values included.
             value & (period - 1)
         } else {
-            // Euclidean remainder in unsigned arithmetic (the period is positive and below
-            // 2^62): `rem_euclid` would check for `i64::MIN % -1` and bring in a panic.
-            let period = period as u64;
-            if value >= 0 {
-                (value as u64 % period) as i64
+            // `value = whole 2^46 + fraction`, fraction in `0..2^46`, so the remainder modulo
+            // `side 2^46` is `(whole mod side) 2^46 + fraction`: the whole texels (18 bits
+            // with the sign) reduced by a 32-bit division, not a 64-bit one (a long library
+            // call on Cortex-M). Euclidean, in unsigned arithmetic: `rem_euclid` would check
+            // for `i32::MIN % -1` and bring in a panic.
+            let side = ((self.last as u32) + 1).max(1);
+            let whole = (value >> COORDINATE_BITS) as i32;
+            let wrapped = if whole >= 0 {
+                whole as u32 % side
             } else {
-                (period - 1 - (!value) as u64 % period) as i64
-            }
+                side - 1 - (!whole) as u32 % side
+            };
+            (i64::from(wrapped) << COORDINATE_BITS) | (value & ((1 << COORDINATE_BITS) - 1))
         }
     }
 
