@@ -8,7 +8,9 @@
 //!
 //! For measuring, `FW_MODE` (read at build time) draws one mode instead: `none` (nothing: the
 //! baseline every other build is measured against), `flat`, `gouraud`, `gouraud-z` (Gouraud
-//! through a depth buffer) or `texture` (every filter, wrap and modulation). Vertices, colours,
+//! through a depth buffer), `texture` (every filter, wrap and modulation, affine) or
+//! `texture-perspective` (the same, perspective-correct where the `w` differ, affine where
+//! they are equal). Vertices, colours,
 //! depths, coordinates and options pass through `core::hint::black_box`, so the compiler
 //! cannot fold any of the library away: each build minus `none` is what that mode costs in
 //! flash.
@@ -24,7 +26,7 @@ use fixed::types::I16F16;
 use panic_halt as _;
 use trirast::{
     depth::{DepthBuffer, DepthTarget},
-    texture::{Filter, Texels, Wrap},
+    texture::{Filter, Perspective, Texels, Wrap},
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
@@ -68,7 +70,7 @@ fn main() -> ! {
                 &GouraudStyle::new(colors).with_dither(black_box(false)),
             );
         }
-        Some("texture") => {
+        Some(mode @ ("texture" | "texture-perspective")) => {
             let texels = black_box([Rgb565::WHITE, Rgb565::BLACK, Rgb565::RED, Rgb565::BLUE]);
             let Ok(texture) = Texels::new(&texels, 2, 2) else {
                 loop {}
@@ -82,6 +84,10 @@ fn main() -> ! {
                             .with_filter(black_box(filter))
                             .with_wrap(black_box(wrap));
                         style.modulation = black_box(modulation);
+                        if mode == "texture-perspective" {
+                            let w = black_box([1, 2, 3].map(I16F16::from_num));
+                            style = style.with_perspective(Perspective::new(w));
+                        }
                         let _ = triangle.into_styled(style).draw(&mut display);
                     }
                 }
