@@ -8,7 +8,10 @@
 //! `floor(K / D)` for a numerator `K` that grows by `256 (b.x - a.x)` per row: the bound steps
 //! by quotient and remainder, one division per edge, as Bresenham's does.
 
-use embedded_graphics::primitives::Rectangle;
+use embedded_graphics::{
+    geometry::{Point, Size},
+    primitives::Rectangle,
+};
 
 use super::{
     edge::{increments, Rounding},
@@ -209,12 +212,16 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
         walk_in::<i32, K>([top, middle, bottom], rule, clip, sink)
     } else {
         // Rare: out of line and type-erased, one copy for every sink (its error is kept
-        // here; the walk only stops).
-        let wide = |(x, y): (i32, i32)| (i64::from(x), i64::from(y));
+        // here; the walk only stops). Scalars, not references: the cold call should not
+        // force the window into memory on the fast path.
+        let (tl, size) = (clip.top_left, clip.size);
         let mut error = None;
-        let _ = walk_wide([top, middle, bottom].map(wide), rule, clip, &mut |span| {
-            sink.span(span).map_err(|e| error = Some(e))
-        });
+        let _ = walk_wide(
+            [top.0, top.1, middle.0, middle.1, bottom.0, bottom.1],
+            rule,
+            [tl.x, tl.y, size.width as i32, size.height as i32],
+            &mut |span| sink.span(span).map_err(|e| error = Some(e)),
+        );
         error.map_or(Ok(()), Err)
     }
 }
@@ -225,12 +232,18 @@ const NARROW_LIMIT: i32 = 1 << 30;
 /// [`walk_in`] in 64-bit arithmetic, for triangles beyond the 32-bit range.
 #[inline(never)]
 fn walk_wide(
-    vertices: [(i64, i64); 3],
+    v: [i32; 6],
     rule: FillRule,
-    clip: &Rectangle,
+    clip: [i32; 4],
     sink: &mut dyn SpanSink<Error = ()>,
 ) -> Result<(), ()> {
-    walk_in::<i64, _>(vertices, rule, clip, sink)
+    let wide = |x: i32, y: i32| (i64::from(x), i64::from(y));
+    let vertices = [wide(v[0], v[1]), wide(v[2], v[3]), wide(v[4], v[5])];
+    let clip = Rectangle::new(
+        Point::new(clip[0], clip[1]),
+        Size::new(clip[2] as u32, clip[3] as u32),
+    );
+    walk_in::<i64, _>(vertices, rule, &clip, sink)
 }
 
 /// The walk of vertices sorted by row, in lane `T`.
