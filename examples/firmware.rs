@@ -1,6 +1,7 @@
 //! Firmware for emulated Cortex-M (QEMU's MPS2 boards): renders the benchmark scenes into a RAM
 //! framebuffer with every drawing mode (flat, Gouraud, Gouraud with depth, nearest and
-//! bilinear textures, 16-row bands with a depth band), checks each frame's checksum against
+//! bilinear textures, 16-row bands with a depth band, with and without set-ups kept between
+//! bands, ...), checks each frame's checksum against
 //! the host's (`examples/common/modes.rs`, checked on x86-64 by `tests/firmware_frames.rs`),
 //! prints the instructions per drawn pixel and per triangle, and exits with success only if
 //! every frame matches.
@@ -28,10 +29,12 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use heapless::Vec;
-use modes::{DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
+use modes::{
+    DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, SETUP_SLOTS, TEXTURE_SIDE,
+};
 use panic_halt as _;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
-use trirast::{texture::Texels, Framebuffer};
+use trirast::{band::SetupSlot, texture::Texels, Framebuffer};
 
 #[entry]
 fn main() -> ! {
@@ -50,12 +53,14 @@ fn main() -> ! {
     }
     let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
     let mut list: DisplayList<MAX_TRIANGLES> = DisplayList::new(screen);
+    let setups = [SetupSlot::EMPTY; SETUP_SLOTS];
     let mut work = Workspace {
         texture: Texels::new(&texels, TEXTURE_SIDE, TEXTURE_SIDE).unwrap(),
         depths: &mut depths,
         band: &mut band,
         depth_band: &mut depth_band,
         list: &mut list,
+        setups: &setups,
     };
     let mut triangles: Vec<SceneTriangle, MAX_TRIANGLES> = Vec::new();
 

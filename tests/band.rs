@@ -12,7 +12,7 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 use proptest::prelude::*;
 use trirast::{
-    band::{BandError, Bands, Scene, SceneStyle},
+    band::{BandError, Bands, Scene, SceneStyle, SetupCache, SetupSlot},
     depth::{DepthBuffer, DepthTarget, DepthTest},
     target::BlendTarget,
     texture::{Filter, Texels, Wrap},
@@ -156,14 +156,47 @@ fn full_frame(scene: &Scene<'_, Rgb565, 64>, background: Rgb565, far: u16) -> Ve
     pixels
 }
 
-fn banded(scene: &Scene<'_, Rgb565, 64>, rows: u32, background: Rgb565, far: u16) -> Vec<Rgb565> {
+/// The scene rendered in bands of `rows` rows, keeping set-ups in `setups` if given (rendered
+/// twice then: the second frame must not use the first's set-ups wrongly).
+fn banded(
+    scene: &Scene<'_, Rgb565, 64>,
+    rows: u32,
+    background: Rgb565,
+    far: u16,
+    setups: Option<&[SetupSlot]>,
+) -> Vec<Rgb565> {
     let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
     let mut depth_band = vec![0u16; (W * rows) as usize];
-    let mut bands = Bands::new(&mut band, W, rows)
+    let bands = Bands::new(&mut band, W, rows)
         .unwrap()
         .with_depth(&mut depth_band)
         .unwrap()
         .with_far_depth(far);
+    match setups {
+        None => render(bands, scene, background),
+        Some(slots) => {
+            let mut bands = bands.with_setup_cache(slots);
+            let first = render_into(&mut bands, scene, background);
+            let second = render_into(&mut bands, scene, background);
+            assert!(first == second, "the second frame differs");
+            second
+        }
+    }
+}
+
+fn render<K: SetupCache>(
+    mut bands: Bands<'_, Rgb565, Rgb565, K>,
+    scene: &Scene<'_, Rgb565, 64>,
+    background: Rgb565,
+) -> Vec<Rgb565> {
+    render_into(&mut bands, scene, background)
+}
+
+fn render_into<K: SetupCache>(
+    bands: &mut Bands<'_, Rgb565, Rgb565, K>,
+    scene: &Scene<'_, Rgb565, 64>,
+    background: Rgb565,
+) -> Vec<Rgb565> {
     let mut pixels = vec![Rgb565::new(1, 2, 3); (W * H) as usize];
     let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
     let mut frame = frame.translated(Point::zero() - scene.screen().top_left);
@@ -201,8 +234,18 @@ proptest! {
         let background = color(&mut rng);
         let want = full_frame(&scene, background, far);
         for rows in [1, 7, 16, H, H + 5] {
-            let got = banded(&scene, rows, background, far);
+            let got = banded(&scene, rows, background, far, None);
             prop_assert!(got == want, "band height {} differs", rows);
+        }
+        // Kept set-ups: a slot for every triangle, for some, for none; the slots used for
+        // another scene first, whose set-ups must not be taken for this one's.
+        let slots: Vec<SetupSlot> = (0..64).map(|_| SetupSlot::EMPTY).collect();
+        let count = [64, rng.range(1, 8) as usize, 0][rng.range(0, 2) as usize];
+        let other = random_scene(&mut rng, texture, test, origin);
+        for rows in [1, 7, H] {
+            let _ = banded(&other, rows, background, far, Some(&slots[..count]));
+            let got = banded(&scene, rows, background, far, Some(&slots[..count]));
+            prop_assert!(got == want, "band height {} with {} set-up slots differs", rows, count);
         }
     }
 }

@@ -8,9 +8,11 @@ mod modes;
 mod scenes;
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
-use modes::{DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, TEXTURE_SIDE};
+use modes::{
+    DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, SETUP_SLOTS, TEXTURE_SIDE,
+};
 use scenes::{Scene, HEIGHT, WIDTH};
-use trirast::{texture::Texels, Framebuffer};
+use trirast::{band::SetupSlot, texture::Texels, Framebuffer};
 
 #[test]
 fn frames_match_the_firmware_checksums() {
@@ -23,12 +25,14 @@ fn frames_match_the_firmware_checksums() {
     let screen =
         embedded_graphics::primitives::Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
     let mut list: Box<DisplayList<MAX_TRIANGLES>> = Box::new(DisplayList::new(screen));
+    let setups = [SetupSlot::EMPTY; SETUP_SLOTS];
     let mut work = Workspace {
         texture: Texels::new(&texels, TEXTURE_SIDE, TEXTURE_SIDE).unwrap(),
         depths: &mut depths,
         band: &mut band,
         depth_band: &mut depth_band,
         list: &mut list,
+        setups: &setups,
     };
     let mut pixels = vec![Rgb565::BLACK; FRAME_LEN];
     let mut mismatches = Vec::new();

@@ -6,7 +6,7 @@
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::StyledDrawable};
 use fixed::types::{I16F16, I24F8};
 use trirast::{
-    band::{Bands, Scene as BandScene, SceneStyle},
+    band::{Bands, Scene as BandScene, SceneStyle, SetupCache, SetupSlot},
     depth::{DepthBuffer, DepthTarget},
     geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
@@ -31,6 +31,10 @@ pub const FRAME_LEN: usize = (WIDTH * HEIGHT) as usize;
 /// Triangles in the largest scene (`small`).
 pub const MAX_TRIANGLES: usize = 5000;
 
+/// Set-up slots of `BandCache`: one per triangle of the largest scene (120 bytes each on
+/// Cortex-M; `scene200` would need 200, 24,000 bytes).
+pub const SETUP_SLOTS: usize = MAX_TRIANGLES;
+
 /// The modes the firmware runs, in order.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Mode {
@@ -46,6 +50,9 @@ pub enum Mode {
     TexBilinear,
     /// The `GouraudZ` frame as a scene rendered in 16-row bands with a depth band.
     Band,
+    /// `Band` keeping each triangle's set-up between bands (`Bands::with_setup_cache`, one
+    /// slot per triangle up to [`SETUP_SLOTS`]).
+    BandCache,
     /// Gouraud at half opacity over the frame (`Framebuffer::translucent`): every pixel read,
     /// blended and written. Minus `Gouraud`, what translucency costs.
     Translucent,
@@ -70,7 +77,7 @@ pub enum Mode {
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 15] = [
+    pub const ALL: [Mode; 16] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -86,6 +93,7 @@ impl Mode {
         Mode::TexNearestSub,
         Mode::PerspNearest,
         Mode::PerspBilinear,
+        Mode::BandCache,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -97,6 +105,7 @@ impl Mode {
             Mode::TexNearest => "tex-nearest",
             Mode::TexBilinear => "tex-bilinear",
             Mode::Band => "band",
+            Mode::BandCache => "band-cache",
             Mode::Translucent => "translucent",
             Mode::GouraudDither => "gouraud-dither",
             Mode::AntiAliased => "aa-flat",
@@ -120,8 +129,8 @@ impl Mode {
 
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
-/// `GouraudZ` and `Band` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 60] = [
+/// `GouraudZ`, `Band` and `BandCache` draw the `Gouraud` image: each triangle is nearer than those before.
+pub const EXPECTED: [(Mode, Scene, u32); 64] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -146,6 +155,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 60] = [
     (Mode::Band, Scene::Small, 0x3e9dc9a8),
     (Mode::Band, Scene::Mesh, 0x4f57a771),
     (Mode::Band, Scene::Scene200, 0xcf7eaaca),
+    (Mode::BandCache, Scene::Big, 0x4a62dead),
+    (Mode::BandCache, Scene::Small, 0x3e9dc9a8),
+    (Mode::BandCache, Scene::Mesh, 0x4f57a771),
+    (Mode::BandCache, Scene::Scene200, 0xcf7eaaca),
     (Mode::Translucent, Scene::Big, 0x98865b87),
     (Mode::Translucent, Scene::Small, 0xb6c09339),
     (Mode::Translucent, Scene::Mesh, 0x4fb0af04),
@@ -234,6 +247,8 @@ pub struct Workspace<'a, const N: usize> {
     pub depth_band: &'a mut [u16],
     /// The display list (for `Band`).
     pub list: &'a mut DisplayList<N>,
+    /// Set-ups kept between bands (for `BandCache`).
+    pub setups: &'a [SetupSlot],
 }
 
 /// The band mode's display list: flat and Gouraud triangles only. `NoTexture` leaves texture
@@ -255,7 +270,13 @@ pub fn draw<const N: usize>(
         Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths, whole),
         Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest, whole),
         Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear, whole),
-        Mode::Band => draw_bands(triangles, frame, work),
+        Mode::Band => draw_bands(triangles, frame, work, |bands| bands),
+        Mode::BandCache => {
+            let setups = work.setups;
+            draw_bands(triangles, frame, work, |bands| {
+                bands.with_setup_cache(setups)
+            })
+        }
         Mode::Translucent => draw_translucent(triangles, frame),
         Mode::GouraudDither => draw_gouraud(triangles, frame, whole, true),
         Mode::AntiAliased => draw_anti_aliased(triangles, frame),
@@ -438,11 +459,13 @@ pub fn receding_w(vertices: [Point; 3]) -> [I16F16; 3] {
     vertices.map(|p| I16F16::from_bits((1 << 16) + 819 * p.y.clamp(0, height)))
 }
 
+/// `GouraudZ` in bands, configured by `configure` (a set-up cache, say).
 #[inline(never)]
-fn draw_bands<const N: usize>(
+fn draw_bands<'w, const N: usize, K: SetupCache>(
     triangles: &[SceneTriangle],
     frame: &mut Framebuffer<'_, Rgb565>,
-    work: &mut Workspace<'_, N>,
+    work: &'w mut Workspace<'_, N>,
+    configure: impl FnOnce(Bands<'w, Rgb565>) -> Bands<'w, Rgb565, Rgb565, K>,
 ) {
     let count = triangles.len();
     let list = &mut *work.list;
@@ -452,8 +475,9 @@ fn draw_bands<const N: usize>(
         let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
         let _ = list.push_with_depth(Triangle::new(a, b, c), layered_depths(k, count), style);
     }
-    let bands =
-        Bands::new(work.band, WIDTH, BAND_ROWS).and_then(|bands| bands.with_depth(work.depth_band));
+    let bands = Bands::new(work.band, WIDTH, BAND_ROWS)
+        .and_then(|bands| bands.with_depth(work.depth_band))
+        .map(configure);
     if let Ok(mut bands) = bands {
         let _ = bands.render(list, Rgb565::BLACK, frame);
     }

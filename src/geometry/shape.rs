@@ -15,6 +15,7 @@ mod sealed {
     pub trait Sealed {}
     impl Sealed for super::Triangle {}
     impl Sealed for super::SubPixelTriangle {}
+    impl<G: super::Shape, K: crate::band::SetupCache> Sealed for crate::band::Cached<'_, G, K> {}
 }
 
 /// A triangle the crate's styles draw: [`Triangle`] (whole-pixel vertices) or

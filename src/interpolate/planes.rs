@@ -298,6 +298,39 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         Some(planes)
     }
 
+    /// Words [`Planes::store`] writes: the origin, then each plane's value and gradients
+    /// (the steps follow from the gradients).
+    pub(crate) const WORDS: usize = 1 + 3 * N;
+
+    /// Writes the planes to `words` (at least [`Planes::WORDS`] long; nothing otherwise), for
+    /// [`Planes::load`] to read back bit for bit: band rendering keeps set-ups between bands.
+    #[inline]
+    pub(crate) fn store(&self, words: &[Cell<i64>]) {
+        let Some(words) = words.get(..Self::WORDS) else {
+            return;
+        };
+        let (x, y) = (self.origin.x as u32, self.origin.y as u32);
+        words[0].set((u64::from(x) | u64::from(y) << 32) as i64);
+        for (k, plane) in words[1..].chunks_exact(3).enumerate().take(N) {
+            plane[0].set(self.base[k]);
+            plane[1].set(self.dx[k]);
+            plane[2].set(self.dy[k]);
+        }
+    }
+
+    /// The planes [`Planes::store`] wrote to `words`; `None` if they are too short.
+    #[inline]
+    pub(crate) fn load(words: &[Cell<i64>]) -> Option<Self> {
+        let words = words.get(..Self::WORDS)?;
+        let origin = words[0].get() as u64;
+        let origin = Point::new(origin as u32 as i32, (origin >> 32) as u32 as i32);
+        let (mut base, mut dx, mut dy) = ([0; N], [0; N], [0; N]);
+        for (k, plane) in words[1..].chunks_exact(3).enumerate().take(N) {
+            (base[k], dx[k], dy[k]) = (plane[0].get(), plane[1].get(), plane[2].get());
+        }
+        Some(Self::from_parts(origin, base, dx, dy))
+    }
+
     /// Planes that are zero everywhere: a placeholder.
     #[inline(always)]
     pub(crate) fn zero() -> Self {
@@ -1689,6 +1722,34 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// Planes stored to words and loaded back are the same planes, steps included; too few
+    /// words store and load nothing.
+    #[test]
+    fn stored_planes_load_back() {
+        let mut rng = crate::test_rng::XorShift(0x0DDC_0FFE_E15B_AD5E);
+        for _ in 0..2_000 {
+            let mut coordinate = || (rng.next_u64() % 4001) as i32 - 2000;
+            let vertices = [(); 3].map(|()| Point::new(coordinate(), coordinate()));
+            let values = [(); 3].map(|()| [(); 3].map(|()| (rng.next_u64() >> 20) as i64));
+            let reference = Point::new(-7, 11);
+            let Some(planes) = Planes::<3, 32>::new(vertices, values, 1 << 15, reference) else {
+                continue;
+            };
+            let words: [Cell<i64>; 10] = Default::default();
+            planes.store(&words);
+            let loaded = Planes::<3, 32>::load(&words).unwrap();
+            assert_eq!(loaded.origin, planes.origin);
+            assert_eq!(
+                (loaded.base, loaded.dx, loaded.dy, loaded.step),
+                (planes.base, planes.dx, planes.dy, planes.step)
+            );
+            assert!(Planes::<3, 32>::load(&words[..9]).is_none());
+            let short: [Cell<i64>; 9] = Default::default();
+            planes.store(&short);
+            assert!(short.iter().all(|w| w.get() == 0));
         }
     }
 
