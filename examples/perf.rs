@@ -9,7 +9,8 @@
 //! each frame; each triangle nearer than the ones before, so every pixel passes), `band` (the
 //! `gouraud-z` frame as a band-rendered scene: triangles pushed to a `band::Scene` each frame,
 //! rendered in 16-row bands with a depth band, each band copied to the framebuffer with one
-//! `fill_contiguous`; same image as `gouraud-z`), `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
+//! `fill_contiguous`; same image as `gouraud-z`), `band-cache` (the same keeping each
+//! triangle's set-up between bands, `Bands::with_setup_cache`), `tex-nearest`, `tex-bilinear` (a 64x64 `Rgb565` texture stretched
 //! over each triangle's bounding box, clamped), `tex-modulated` (the same, bilinear, times
 //! Gouraud colours), `tex-nearest-repeat`, `tex-bilinear-repeat` (the texture tiled across
 //! the screen, rotated: repeat by masking), `tex-nearest-clamp` (tiled coordinates, clamped),
@@ -43,7 +44,7 @@ use fixed::types::I16F16;
 use modes::DisplayList;
 use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
 use trirast::{
-    band::{Bands, SceneStyle},
+    band::{Bands, SceneStyle, SetupCache, SetupSlot},
     coverage::{for_each_span, Span},
     depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Perspective, Texels, Wrap},
@@ -58,6 +59,7 @@ const MODES: &[&str] = &[
     "gouraud-z",
     "flat-z",
     "band",
+    "band-cache",
     "tex-nearest",
     "tex-bilinear",
     "tex-modulated",
@@ -139,22 +141,27 @@ where
             let mut zbuffer = DepthBuffer::new(&mut depths, size.width, size.height).unwrap();
             depth_frame(scene, mode == "gouraud-z", &mut zbuffer, target);
         }
-        "band" => BAND_MEMORY.with_borrow_mut(|memory| {
+        "band" | "band-cache" => BAND_MEMORY.with_borrow_mut(|memory| {
             // Allocated once: a 5,000-triangle scene is half a megabyte, which a frame
             // should not pay to allocate and clear.
-            let (list, band, depth_band) = memory.get_or_insert_with(|| {
+            let (list, band, depth_band, setups) = memory.get_or_insert_with(|| {
                 let width = WIDTH as usize * BAND_ROWS as usize;
                 let screen = Rectangle::new(Point::zero(), Size::new(WIDTH, HEIGHT));
                 (
                     Box::new(DisplayList::new(screen)),
                     vec![Rgb565::BLACK; width],
                     vec![0u16; width],
+                    (0..BAND_CAPACITY).map(|_| SetupSlot::EMPTY).collect(),
                 )
             });
-            let mut bands = Bands::new(band, WIDTH, BAND_ROWS)
+            let bands = Bands::new(band, WIDTH, BAND_ROWS)
                 .and_then(|b| b.with_depth(depth_band))
                 .unwrap();
-            band_frame(scene, list, &mut bands, target);
+            if mode == "band" {
+                band_frame(scene, list, bands, target);
+            } else {
+                band_frame(scene, list, bands.with_setup_cache(setups), target);
+            }
         }),
         "fill-baseline" | "coverage" => {
             // Only for counting: the timed loop fills precomputed spans directly.
@@ -275,8 +282,14 @@ const BAND_ROWS: u32 = 16;
 /// Scene capacity in the `band` mode: the largest scene (`small`) fits.
 const BAND_CAPACITY: usize = 5000;
 
-/// What the `band` mode's frames share: the scene, the band and the depth band.
-type BandMemory = (Box<DisplayList<BAND_CAPACITY>>, Vec<Rgb565>, Vec<u16>);
+/// What the `band` modes' frames share: the scene, the band, the depth band and the set-up
+/// slots.
+type BandMemory = (
+    Box<DisplayList<BAND_CAPACITY>>,
+    Vec<Rgb565>,
+    Vec<u16>,
+    Vec<SetupSlot>,
+);
 
 thread_local! {
     static BAND_MEMORY: std::cell::RefCell<Option<BandMemory>> = const { std::cell::RefCell::new(None) };
@@ -284,10 +297,10 @@ thread_local! {
 
 /// The `gouraud-z` frame, band-rendered: the scene is built and rendered every frame.
 #[inline(never)]
-fn band_frame<D>(
+fn band_frame<D, K: SetupCache>(
     scene: &[SceneTriangle],
     list: &mut DisplayList<BAND_CAPACITY>,
-    bands: &mut Bands<'_, Rgb565>,
+    mut bands: Bands<'_, Rgb565, Rgb565, K>,
     target: &mut D,
 ) where
     D: DrawTarget<Color = Rgb565>,
