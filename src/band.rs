@@ -65,7 +65,7 @@ use crate::{
         paint::{draw_anti_aliased_in, draw_plain_in},
         ChannelColor, FlatStyle, GouraudStyle, TextureStyle,
     },
-    target::{Framebuffer, StoredPixel},
+    target::{fill_run, Framebuffer, StoredPixel},
     texture::{TexelSource, Texels},
     Error,
 };
@@ -818,7 +818,7 @@ where
         let mut depth_band = match self.depths.as_deref_mut() {
             Some(depths) => {
                 let depths = &mut depths[..len];
-                depths.fill(self.far);
+                fill_run(depths, self.far);
                 Some(
                     DepthBuffer::new(depths, self.width, rows)
                         .unwrap_or_else(|_| unreachable!("depth band sized in with_depth")),

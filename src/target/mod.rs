@@ -9,6 +9,7 @@ mod framebuffer;
 mod storage;
 mod translucency;
 
+pub(crate) use framebuffer::fill_run;
 pub use framebuffer::Framebuffer;
 pub use storage::StoredPixel;
 pub use translucency::{blend, BlendTarget, OverBackground, Translucent};
