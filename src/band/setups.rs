@@ -285,6 +285,22 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
+    fn planes_with<const N: usize, const SETUP: u32>(
+        &self,
+        values: impl FnOnce() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        let at = match self.stored() {
+            Ok(planes) => return Some(planes),
+            Err(at) => at,
+        };
+        let planes = self.shape.planes(values(), bias, reference)?;
+        self.keep(&planes, at);
+        Some(planes)
+    }
+
+    #[inline(always)]
     fn planes_in<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],

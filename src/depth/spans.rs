@@ -38,8 +38,11 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
         // from the first vertex when the triangle is small, wherever that vertex is (as colours
         // are): from a corner of the window instead, a band that does not hold the vertex
         // would set the plane up in 128-bit arithmetic.
-        let values = self.depths.map(|d| [i64::from(d) << 16]);
-        let Some(depth) = self.triangle.planes(values, 1 << 15, self.setup.top_left) else {
+        let values = || self.depths.map(|d| [i64::from(d) << 16]);
+        let Some(depth) = self
+            .triangle
+            .planes_with(values, 1 << 15, self.setup.top_left)
+        else {
             return Ok(());
         };
         let (flip, slack) = self.test.comparison();

@@ -73,6 +73,19 @@ pub trait Shape: sealed::Sealed {
         reference: Point,
     ) -> Option<Planes<N, SETUP>>;
 
+    /// [`Shape::planes`] of the values `values` gives, called only when the planes are made
+    /// (band rendering may have them already).
+    #[doc(hidden)]
+    #[inline(always)]
+    fn planes_with<const N: usize, const SETUP: u32>(
+        &self,
+        values: impl FnOnce() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        self.planes(values(), bias, reference)
+    }
+
     /// Planes of per-vertex `values` with their reference kept within `window`.
     #[doc(hidden)]
     fn planes_in<const N: usize, const SETUP: u32>(

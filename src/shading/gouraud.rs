@@ -164,13 +164,14 @@ where
         window: &Rectangle,
         visitor: V,
     ) -> Option<V::Output> {
-        let values = self
-            .colors
-            .map(|c| c.channels().map(|v| i64::from(v) << 16));
+        let values = || {
+            self.colors
+                .map(|c| c.channels().map(|v| i64::from(v) << 16))
+        };
         // Rounded: half a level of bias turns truncation into rounding to nearest. Dithered:
         // the threshold takes its place.
         let bias = if self.dither { 0 } else { 1 << 15 };
-        let planes = triangle.planes(values, bias, window.top_left)?;
+        let planes = triangle.planes_with(values, bias, window.top_left)?;
         let painter = GouraudPainter {
             packed_steps: PackedShader::<C, N>::packed_steps(&planes.step),
             planes: TrackedPlanes::new(planes),
