@@ -339,4 +339,6 @@ fn scene_sizes() {
     // 128 bytes on 64-bit hosts (the texture's slice reference is 16 of them, a texture
     // style's perspective 16 more); 112 on 32-bit Cortex-M.
     assert!(triangle <= 128, "{triangle} bytes per scene triangle");
+    // What `SetupSlot`'s documentation promises, on hosts and on Cortex-M alike (no pointers).
+    assert_eq!(core::mem::size_of::<SetupSlot>(), 120);
 }
