@@ -287,7 +287,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     #[inline(always)]
     fn planes_with<const N: usize, const SETUP: u32>(
         &self,
-        values: impl FnOnce() -> [[i64; N]; 3],
+        values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
     ) -> Option<Planes<N, SETUP>> {
@@ -295,7 +295,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
             Ok(planes) => return Some(planes),
             Err(at) => at,
         };
-        let planes = self.shape.planes(values(), bias, reference)?;
+        let planes = self.shape.planes_with(values, bias, reference)?;
         self.keep(&planes, at);
         Some(planes)
     }
