@@ -241,6 +241,24 @@ impl Shape for SubPixelTriangle {
     }
 
     #[inline(always)]
+    fn planes_with<const N: usize, const SETUP: u32>(
+        &self,
+        values: impl Fn() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        // As the whole-pixel triangle's.
+        if !cfg!(target_has_atomic = "32") {
+            return self.planes(values(), bias, reference);
+        }
+        if let Some(whole) = self.whole() {
+            return whole.planes_with(values, bias, reference);
+        }
+        let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
+        Planes::new_subpixel_with(raw, values, bias, reference)
+    }
+
+    #[inline(always)]
     fn planes_in<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],

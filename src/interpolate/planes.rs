@@ -133,6 +133,24 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         }
     }
 
+    /// [`Planes::new_subpixel`] of the values `values` gives, made in the branch that sets up,
+    /// as [`Planes::new_with`].
+    #[inline(always)]
+    pub(crate) fn new_subpixel_with(
+        vertices: [(i32, i32); 3],
+        values: impl Fn() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+    ) -> Option<Self> {
+        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
+            Self::new_small_subpixel(p0, values(), bias, e)
+        } else {
+            Self::new_large_subpixel(vertices, values(), bias, reference)
+        }
+    }
+
     /// [`Planes::new_in`] for vertices in 1/256 pixel: see [`Planes::new_subpixel`].
     #[inline(always)]
     pub(crate) fn new_subpixel_in(
