@@ -12,8 +12,9 @@ use crate::{
 };
 
 /// Words of set-up one slot holds: a Gouraud triangle's colour planes and depth plane (14),
-/// a textured one's coordinate and depth planes (11). Set-ups that do not fit (a modulated
-/// texture's third set) are made again in every band.
+/// a textured one's coordinate and depth planes (11), a perspective-correct one's (14).
+/// Set-ups from the first that does not fit on (a modulated texture's tint, 10 words after its
+/// coordinates' 7, and its depth) are made again in every band.
 const SLOT_WORDS: usize = 14;
 
 /// Room for one triangle's interpolation set-up between bands ([`Bands::with_setup_cache`]):
