@@ -167,13 +167,13 @@ fn banded(
 ) -> Vec<Rgb565> {
     let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
     let mut depth_band = vec![0u16; (W * rows) as usize];
-    let bands = Bands::new(&mut band, W, rows)
+    let mut bands = Bands::new(&mut band, W, rows)
         .unwrap()
         .with_depth(&mut depth_band)
         .unwrap()
         .with_far_depth(far);
     match setups {
-        None => render(bands, scene, background),
+        None => render_into(&mut bands, scene, background),
         Some(slots) => {
             let mut bands = bands.with_setup_cache(slots);
             let first = render_into(&mut bands, scene, background);
@@ -182,14 +182,6 @@ fn banded(
             second
         }
     }
-}
-
-fn render<K: SetupCache>(
-    mut bands: Bands<'_, Rgb565, Rgb565, K>,
-    scene: &Scene<'_, Rgb565, 64>,
-    background: Rgb565,
-) -> Vec<Rgb565> {
-    render_into(&mut bands, scene, background)
 }
 
 fn render_into<K: SetupCache>(
