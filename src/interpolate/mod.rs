@@ -12,6 +12,6 @@ mod perspective;
 mod planes;
 
 pub use barycentric::{Barycentric, Location};
-pub(crate) use perspective::{mul_small, PerspectivePlanes};
+pub(crate) use perspective::PerspectivePlanes;
 pub use perspective::{Perspective, SubSpan};
 pub(crate) use planes::{Planes, TrackedPlanes};

@@ -13,6 +13,7 @@ use fixed::types::I16F16;
 
 use super::{planes::widening_mul, TrackedPlanes};
 use crate::geometry::Shape;
+use crate::setup::lane::mul_small;
 
 /// How many pixels apart perspective-correct interpolation divides: the true texture coordinates
 /// are computed at both ends of each sub-span of a row, and stepped linearly between.
@@ -473,19 +474,6 @@ pub(crate) struct Stretch<const N: usize> {
     pub(crate) end: [i32; N],
 }
 
-/// `value * small` (wrapping) for `small` below 2^16, in 32-bit multiplies where a 64-bit one
-/// is a call (Cortex-M0: three calls of about forty instructions for an `i64` product).
-#[inline(always)]
-pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
-    if cfg!(target_has_atomic = "32") {
-        return value.wrapping_mul(i64::from(small));
-    }
-    let (high, low) = ((value >> 32) as u32, value as u32);
-    // `small` below 2^16: the low word's product from two 16-bit multiplies, not four.
-    let low = (u64::from((low >> 16) * small) << 16) + u64::from((low & 0xFFFF) * small);
-    (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
-}
-
 /// The per-pixel step from `start` to `end` over `pixels` (1 to 32) pixels, rounded towards
 /// zero, so that every value stepped to lies between the two: a multiply by a 32-bit
 /// reciprocal from a table, not a division. Within 1.5 units of the exact quotient.
@@ -568,26 +556,6 @@ mod tests {
                     shift_right(value, shift),
                     value >> shift,
                     "{value} >> {shift}"
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn small_products_wrap_as_64_bit_ones() {
-        for value in [
-            0i64,
-            1,
-            -1,
-            i64::MAX,
-            i64::MIN,
-            0x1234_5678_9ABC,
-            -0xFFFF_FFFF,
-        ] {
-            for small in [0u32, 1, 7, 16, 31, 0xFFFF] {
-                assert_eq!(
-                    mul_small(value, small),
-                    value.wrapping_mul(i64::from(small))
                 );
             }
         }

@@ -5,7 +5,7 @@ use core::cell::Cell;
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 use super::perspective::{mul_u32, reciprocal};
-use crate::setup::lane::{div_rem_u64, floor_div_rem_i128};
+use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_count};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -1001,7 +1001,11 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                 _ => {
                     let columns = i64::from(dx);
                     for k in 0..N {
-                        let sum = planes.dy[k].wrapping_add(planes.dx[k].wrapping_mul(columns));
+                        let product = match i16::try_from(dx) {
+                            Ok(columns) => mul_count(planes.dx[k], columns),
+                            Err(_) => planes.dx[k].wrapping_mul(columns),
+                        };
+                        let sum = planes.dy[k].wrapping_add(product);
                         self.row_sum[k].set(sum);
                         add(&self.values[k], sum);
                     }
@@ -1020,9 +1024,29 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                 }
             }
         } else {
-            let values = self.planes.at_exact(x, y);
-            (0..N).for_each(|k| self.values[k].set(values[k]));
+            self.move_far(x, y);
         }
+    }
+
+    /// [`TrackedPlanes::track`] to a point more than a row away: a triangle's first span, and
+    /// a band's triangles in every band after their first. As [`Planes::at_exact`], by
+    /// [`mul_count`] where the moves fit (in `at_exact`, inline in every span loop's set-up,
+    /// that measured slower on Cortex-M0). Out of line, so that the near moves keep their
+    /// registers.
+    #[inline(never)]
+    fn move_far(&self, x: i32, y: i32) {
+        let planes = &self.planes;
+        let columns = i16::try_from(i64::from(x) - i64::from(planes.origin.x));
+        let rows = i16::try_from(i64::from(y) - i64::from(planes.origin.y));
+        let values = match (columns, rows) {
+            (Ok(columns), Ok(rows)) => core::array::from_fn(|k| {
+                planes.base[k]
+                    .wrapping_add(mul_count(planes.dx[k], columns))
+                    .wrapping_add(mul_count(planes.dy[k], rows))
+            }),
+            _ => planes.at_exact(x, y),
+        };
+        (0..N).for_each(|k| self.values[k].set(values[k]));
     }
 
     /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].

@@ -268,6 +268,51 @@ pub(crate) fn div_rem_floor_by_bits(value: i32, divisor: i32) -> (i32, i32) {
     }
 }
 
+/// `value * small` (wrapping) for `small` below 2^16, in 32-bit multiplies where a 64-bit one
+/// is a call (Cortex-M0: three calls of about forty instructions for an `i64` product).
+#[inline(always)]
+pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
+    if cfg!(target_has_atomic = "32") {
+        value.wrapping_mul(i64::from(small))
+    } else {
+        mul_small_split(value, small)
+    }
+}
+
+/// [`mul_small`] on Cortex-M0; tested on every host.
+#[inline(always)]
+fn mul_small_split(value: i64, small: u32) -> i64 {
+    let (high, low) = ((value >> 32) as u32, value as u32);
+    // `small` below 2^16: the low word's product from two 16-bit multiplies, not four.
+    let low = (u64::from((low >> 16) * small) << 16) + u64::from((low & 0xFFFF) * small);
+    (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
+}
+
+/// `value * count` (wrapping) for a count of rows or columns within `i16`, as counts across
+/// a screen are: three 32-bit multiplies where a 64-bit one is a library call of about forty
+/// instructions (Cortex-M0), one multiply elsewhere. The same bits either way.
+#[inline(always)]
+pub(crate) fn mul_count(value: i64, count: i16) -> i64 {
+    if cfg!(target_has_atomic = "32") {
+        value.wrapping_mul(i64::from(count))
+    } else {
+        mul_count_split(value, count)
+    }
+}
+
+/// [`mul_count`] on Cortex-M0; tested on every host.
+#[inline(always)]
+fn mul_count_split(value: i64, count: i16) -> i64 {
+    let count = i32::from(count);
+    let (high, low) = ((value >> 32) as i32, value as u32);
+    // Each 16-bit half of the low word times the count is below 2^31 in magnitude.
+    let upper = i64::from((low >> 16) as i32 * count) << 16;
+    let lower = i64::from((low & 0xFFFF) as i32 * count);
+    (i64::from(high.wrapping_mul(count)) << 32)
+        .wrapping_add(upper)
+        .wrapping_add(lower)
+}
+
 /// `(n / d, n % d)` for `d > 0`, in 32 bits when both fit (on Cortex-M0 a short library call),
 /// else by shift and subtract: slow, but a few dozen instructions of flash instead of the ~1 KB
 /// 64-bit division routine. Only rare paths divide in 64 bits: edges starting far above the
@@ -358,6 +403,59 @@ pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn small_products_wrap_as_64_bit_ones() {
+        for value in [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN,
+            0x1234_5678_9ABC,
+            -0xFFFF_FFFF,
+        ] {
+            for small in [0u32, 1, 7, 16, 31, 0xFFFF] {
+                let product = value.wrapping_mul(i64::from(small));
+                assert_eq!(mul_small(value, small), product);
+                assert_eq!(mul_small_split(value, small), product);
+            }
+        }
+    }
+
+    /// The split products (Cortex-M0's) against the 64-bit one, on fixed and pseudo-random
+    /// values and every count's edge cases.
+    #[test]
+    fn count_products_wrap_as_64_bit_ones() {
+        let fixed = [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN,
+            0x1234_5678_9ABC,
+            -0xFFFF_FFFF,
+        ];
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let random = (0..2000).map(|_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state as i64
+        });
+        for value in fixed.into_iter().chain(random) {
+            for count in [0i16, 1, -1, 7, -16, 0x7FFF, -0x7FFF, i16::MIN, value as i16] {
+                let product = value.wrapping_mul(i64::from(count));
+                assert_eq!(mul_count(value, count), product);
+                assert_eq!(mul_count_split(value, count), product);
+            }
+            let small = (value as u32) & 0xFFFF;
+            assert_eq!(
+                mul_small_split(value, small),
+                value.wrapping_mul(i64::from(small))
+            );
+        }
+    }
 
     /// The 32-bit cores' division, checked on the host as well: the unsigned shift and
     /// subtract against the library's division, and the floor division built on it against

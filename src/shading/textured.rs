@@ -13,7 +13,8 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{mul_small, PerspectivePlanes, Planes, TrackedPlanes},
+    interpolate::{PerspectivePlanes, Planes, TrackedPlanes},
+    setup::lane::mul_small,
     texture::{
         Axis, Direct, Filter, Narrow, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
         RAW_SHIFT,
