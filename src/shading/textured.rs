@@ -644,9 +644,32 @@ where
     /// Paints `run` in perspective: sub-span by sub-span, each stepped linearly between the
     /// exact coordinates at its ends ([`PerspectivePlanes::next_sub_span`]). Sub-spans inside
     /// the texture step their raw 16.16 coordinates in 32 bits ([`Narrow`]), the others go
-    /// through the style's addressing.
+    /// through the style's addressing. One walk per filter and modulation, chosen per run:
+    /// each keeps its one span loop's registers.
     #[inline(never)]
     fn paint_perspective<D>(
+        &self,
+        planes: &PerspectivePlanes<3, 2>,
+        run: Span,
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        let (p, o) = (planes, offset);
+        match (self.bilinear, self.tint.is_some()) {
+            (false, false) => self.paint_sub_spans::<_, NO, NO>(p, run, o, target),
+            (false, true) => self.paint_sub_spans::<_, NO, YES>(p, run, o, target),
+            // Bilinear, whose pixels cost ten times more: one walk, modulation chosen per
+            // sub-span.
+            (true, _) => self.paint_sub_spans::<_, YES, EITHER>(p, run, o, target),
+        }
+    }
+
+    /// [`TexturedPainter::paint_perspective`] with one filter and modulation.
+    #[inline(always)]
+    fn paint_sub_spans<D, const FILTER: u8, const TINT: u8>(
         &self,
         planes: &PerspectivePlanes<3, 2>,
         run: Span,
@@ -677,7 +700,16 @@ where
             if inside {
                 let raw = |a: [i32; 2]| (a[0] as u32, a[1] as u32);
                 let (start, steps) = (raw(sub_span.start), raw(sub_span.steps));
-                self.shade_inside(Narrow, steps, start, tint, stretch, offset, target)?;
+                let (pair, o) = ((Narrow, Narrow), offset);
+                match (TINT, self.tint.is_some()) {
+                    (EITHER, false) => {
+                        self.shade::<_, _, FILTER, NO>(pair, steps, start, tint, stretch, o, target)
+                    }
+                    (EITHER, true) => self
+                        .shade::<_, _, FILTER, YES>(pair, steps, start, tint, stretch, o, target),
+                    _ => self
+                        .shade::<_, _, FILTER, TINT>(pair, steps, start, tint, stretch, o, target),
+                }?;
             } else {
                 let to_coordinate = |a: [i32; 2]| a.map(|a| i64::from(a) << RAW_SHIFT);
                 let (start, steps) = (to_coordinate(sub_span.start), to_coordinate(sub_span.steps));
