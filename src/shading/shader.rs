@@ -223,9 +223,9 @@ where
     where
         D: DrawTarget<Color = C>,
     {
-        let mut sub_spans = self.planes.sub_spans(run.x, run.y, run.len);
+        let mut sub_spans = self.planes.sub_spans(run.x, run.y, run.len, false);
         while sub_spans.left > 0 {
-            let stretch = self.planes.next_sub_span(&mut sub_spans);
+            let stretch = self.planes.next_sub_span(&mut sub_spans, false);
             let shader = SteppedShader {
                 start: stretch.start,
                 steps: stretch.steps,

@@ -680,9 +680,9 @@ where
         D: DrawTarget<Color = T::Color>,
     {
         let tint = self.tint.as_ref().map(|t| (t.at(run.x, run.y), t.step));
-        let mut sub_spans = planes.sub_spans(run.x, run.y, run.len);
+        let mut sub_spans = planes.sub_spans(run.x, run.y, run.len, FILTER == NO);
         while sub_spans.left > 0 {
-            let sub_span = planes.next_sub_span(&mut sub_spans);
+            let sub_span = planes.next_sub_span(&mut sub_spans, FILTER == NO);
             let tint = tint.map(|(at, step)| {
                 let pixels = sub_span.x.wrapping_sub(run.x) as u32;
                 core::array::from_fn(|k| at[k].wrapping_add(step[k].wrapping_mul(pixels)))
