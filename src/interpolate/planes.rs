@@ -1023,16 +1023,21 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                     add(&self.values[k], step);
                 }
             }
+        } else if cfg!(target_has_atomic = "32") {
+            // One multiply per product: inline, as the other moves.
+            let values = self.planes.at_exact(x, y);
+            (0..N).for_each(|k| self.values[k].set(values[k]));
         } else {
             self.move_far(x, y);
         }
     }
 
-    /// [`TrackedPlanes::track`] to a point more than a row away: a triangle's first span, and
-    /// a band's triangles in every band after their first. As [`Planes::at_exact`], by
-    /// [`mul_count`] where the moves fit (in `at_exact`, inline in every span loop's set-up,
-    /// that measured slower on Cortex-M0). Out of line, so that the near moves keep their
-    /// registers.
+    /// [`TrackedPlanes::track`] to a point more than a row away on cores without a 64-bit
+    /// multiply (Cortex-M0): a triangle's first span, and a band's triangles in every band
+    /// after their first. As [`Planes::at_exact`], by [`mul_count`] where the moves fit (in
+    /// `at_exact`, inline in every span loop's set-up, that measured slower). Out of line, so
+    /// that the near moves keep their registers.
+    #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
     #[inline(never)]
     fn move_far(&self, x: i32, y: i32) {
         let planes = &self.planes;
