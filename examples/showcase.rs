@@ -91,17 +91,18 @@ fn perspective_floor() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
         .collect();
     let texture = Texels::new(&checks, 8, 8).unwrap();
     let viewport = Viewport::new(Rectangle::new(Point::zero(), Size::new(w, h)));
-    // The floor 1.5 below the eye, 14 wide, from 1.2 to 60 ahead; 8 texels a unit.
+    // The floor 1.5 below the eye, 160 wide (its far edge crosses the whole view: a level
+    // horizon), from 1.2 to 60 ahead; 8 texels a unit.
     let corner = |x: f32, z: f32| {
         let clip = [x * 0.75, -1.5, 0.0, z].map(I16F16::from_num);
-        let uv = [(x + 7.0) * 8.0, z * 8.0].map(I16F16::from_num);
+        let uv = [(x + 80.0) * 8.0, z * 8.0].map(I16F16::from_num);
         (viewport.project_clip(clip), uv)
     };
     let quad = [
-        corner(-7.0, 60.0),
-        corner(7.0, 60.0),
-        corner(7.0, 1.2),
-        corner(-7.0, 1.2),
+        corner(-80.0, 60.0),
+        corner(80.0, 60.0),
+        corner(80.0, 1.2),
+        corner(-80.0, 1.2),
     ];
     let mut display = SimulatorDisplay::new(Size::new(2 * w + 4, h));
     for (x0, perspective) in [(0, false), (w as i32 + 4, true)] {
