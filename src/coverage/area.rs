@@ -290,7 +290,6 @@ struct Chain {
 }
 
 impl Chain {
-    /// The chain through `vertices` (from the top vertex down to the bottom one).
     /// No edges.
     const EMPTY: Self = Self {
         edges: [UNUSED_EDGE; MAX_EDGES],
