@@ -47,16 +47,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let [p0, p1, p2] = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
-        let (ex1, ey1) = (p1.0 - p0.0, p1.1 - p0.1);
-        let (ex2, ey2) = (p2.0 - p0.0, p2.1 - p0.1);
-        let small = [ex1, ey1, ex2, ey2]
-            .iter()
-            .all(|d| d.unsigned_abs() < 1 << 15);
-        if small {
-            Self::new_small(vertices[0], values, bias, [ex1, ey1, ex2, ey2])
-        } else {
-            Self::new_exact(vertices, values, bias, reference)
+        match edges_within(vertices.map(wide), SMALL_BITS) {
+            Some(e) => Self::new_small(vertices[0], values, bias, e),
+            None => Self::new_exact(vertices, values, bias, reference),
         }
     }
 
@@ -71,12 +64,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let [p0, p1, p2] = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
-        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
-            Self::new_small(vertices[0], values(), bias, e)
-        } else {
-            Self::new_exact(vertices, values(), bias, reference)
+        match edges_within(vertices.map(wide), SMALL_BITS) {
+            Some(e) => Self::new_small(vertices[0], values(), bias, e),
+            None => Self::new_exact(vertices, values(), bias, reference),
         }
     }
 
@@ -104,13 +94,9 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
                 None => return Self::new_exact(vertices, values, bias, window.top_left),
             }
         };
-        let [p0, p1, p2] = vertices.map(|p| (i64::from(p.x), i64::from(p.y)));
-        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        let small = e.iter().all(|d| d.unsigned_abs() < 1 << 15);
-        if small {
-            Self::new_small(vertices[0], values, bias, e)
-        } else {
-            Self::new_exact(vertices, values, bias, window.top_left)
+        match edges_within(vertices.map(wide), SMALL_BITS) {
+            Some(e) => Self::new_small(vertices[0], values, bias, e),
+            None => Self::new_exact(vertices, values, bias, window.top_left),
         }
     }
 
@@ -124,12 +110,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
-        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
-            Self::new_small_subpixel(p0, values, bias, e)
-        } else {
-            Self::new_large_subpixel(vertices, values, bias, reference)
+        let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        match edges_within(wide, SMALL_BITS) {
+            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e),
+            None => Self::new_large_subpixel(vertices, values, bias, reference),
         }
     }
 
@@ -142,12 +126,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         bias: i64,
         reference: Point,
     ) -> Option<Self> {
-        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
-        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
-            Self::new_small_subpixel(p0, values(), bias, e)
-        } else {
-            Self::new_large_subpixel(vertices, values(), bias, reference)
+        let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        match edges_within(wide, SMALL_BITS) {
+            Some(e) => Self::new_small_subpixel(wide[0], values(), bias, e),
+            None => Self::new_large_subpixel(vertices, values(), bias, reference),
         }
     }
 
@@ -169,12 +151,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
                 None => return Self::new_large_subpixel(vertices, values, bias, window.top_left),
             }
         };
-        let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
-        let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-        if e.iter().all(|d| d.unsigned_abs() < 1 << 15) {
-            Self::new_small_subpixel(p0, values, bias, e)
-        } else {
-            Self::new_large_subpixel(vertices, values, bias, window.top_left)
+        let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+        match edges_within(wide, SMALL_BITS) {
+            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e),
+            None => Self::new_large_subpixel(vertices, values, bias, window.top_left),
         }
     }
 
@@ -436,6 +416,23 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 }
 
+/// Deltas below which a triangle takes the small set-up (vertices under 2^15 units apart).
+const SMALL_BITS: u32 = 15;
+
+/// A point's coordinates as `i64`.
+#[inline(always)]
+fn wide(p: Point) -> (i64, i64) {
+    (i64::from(p.x), i64::from(p.y))
+}
+
+/// The edges from the first vertex to the others, `[ex1, ey1, ex2, ey2]`, when every delta is
+/// below `2^bits` in magnitude; `None` otherwise.
+#[inline(always)]
+fn edges_within([p0, p1, p2]: [(i64, i64); 3], bits: u32) -> Option<[i64; 4]> {
+    let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
+    e.iter().all(|d| d.unsigned_abs() < 1 << bits).then_some(e)
+}
+
 /// The vertices and their values taken in turn from the second or third vertex, whichever
 /// first is `inside` (the window); `None` when neither is. Out of line: only triangles
 /// crossing the window's edges come here.
@@ -518,12 +515,12 @@ struct Medium {
 /// `scale_bits` fraction bits beyond raw 16.16. Not generic: one copy.
 #[inline(never)]
 fn medium_setup(vertices: [(i32, i32); 3], scale_bits: u32) -> Large {
-    let [p0, p1, p2] = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
-    let e = [p1.0 - p0.0, p1.1 - p0.1, p2.0 - p0.0, p2.1 - p0.1];
-    if !e.iter().all(|d| d.unsigned_abs() < 1 << MEDIUM_BITS) {
+    let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
+    let Some(e) = edges_within(wide, MEDIUM_BITS) else {
         return Large::Exact;
-    }
+    };
     let [ex1, ey1, ex2, ey2] = e;
+    let p0 = wide[0];
     // |deltas| < 2^19: the doubled area below 2^39.
     let area = ex1 * ey2 - ex2 * ey1;
     if area == 0 {
