@@ -218,6 +218,22 @@ impl<'a, G: Shape, Keep: SetupCache> Cached<'a, G, Keep> {
         }
     }
 
+    /// The next set-up: read back when an earlier band stored it, else `make`'s, kept for the
+    /// bands after.
+    #[inline(always)]
+    fn through_slot<const N: usize, const SETUP: u32>(
+        &self,
+        make: impl FnOnce() -> Option<Planes<N, SETUP>>,
+    ) -> Option<Planes<N, SETUP>> {
+        let at = match self.stored() {
+            Ok(planes) => return Some(planes),
+            Err(at) => at,
+        };
+        let planes = make()?;
+        self.keep(&planes, at);
+        Some(planes)
+    }
+
     /// Stores `planes`, made for the set-up at word `at`, when it fits and follows what the
     /// slot holds (the set-ups before it stored too).
     #[inline(always)]
@@ -276,13 +292,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         bias: i64,
         reference: Point,
     ) -> Option<Planes<N, SETUP>> {
-        let at = match self.stored() {
-            Ok(planes) => return Some(planes),
-            Err(at) => at,
-        };
-        let planes = self.shape.planes(values, bias, reference)?;
-        self.keep(&planes, at);
-        Some(planes)
+        self.through_slot(|| self.shape.planes(values, bias, reference))
     }
 
     #[inline(always)]
@@ -292,13 +302,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         bias: i64,
         reference: Point,
     ) -> Option<Planes<N, SETUP>> {
-        let at = match self.stored() {
-            Ok(planes) => return Some(planes),
-            Err(at) => at,
-        };
-        let planes = self.shape.planes_with(values, bias, reference)?;
-        self.keep(&planes, at);
-        Some(planes)
+        self.through_slot(|| self.shape.planes_with(values, bias, reference))
     }
 
     #[inline(always)]
@@ -308,12 +312,6 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         bias: i64,
         window: &Rectangle,
     ) -> Option<Planes<N, SETUP>> {
-        let at = match self.stored() {
-            Ok(planes) => return Some(planes),
-            Err(at) => at,
-        };
-        let planes = self.shape.planes_in(values, bias, window)?;
-        self.keep(&planes, at);
-        Some(planes)
+        self.through_slot(|| self.shape.planes_in(values, bias, window))
     }
 }
