@@ -64,19 +64,37 @@ fn bound_at<T: Lane>(
 ///
 /// `dx * n + k = step * dy * n + (remainder * n + k)`, and `remainder * n + k <= dy^2` fits
 /// `u64` for any `i32` vertices, so no 128-bit arithmetic is needed.
+///
+/// The 32-bit lane works in 32 bits for edges under 2^15 rows stepping under 2^15 pixels a
+/// row (every edge on a screen; bands jump every edge to each band's first row): Cortex-M0
+/// makes each 64-bit product a library call of about forty instructions. `remainder` and `n`
+/// are at most `dy`, so the numerator stays under 2^31, and `|step n|` under 2^30. Its other
+/// edges go to the 64-bit lane's copy, so the 64-bit arithmetic is built once.
 #[inline(never)]
 fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_in: T) -> (T, T) {
-    let (dy, n) = (dy.to_i64(), rows_in.to_i64());
+    let (dy, n, step) = (dy.to_i64(), rows_in.to_i64(), step.to_i64());
     let k = match rounding {
         Rounding::Ceil => dy - 1,
         Rounding::FloorPlusOne => dy,
     };
-    let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
-    // `dy` is positive; `max` says so, which drops the division-by-zero panic.
-    let (quotient, rem) = div_rem_u64(numerator, dy.max(1) as u64);
-    // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
-    let x = xa.to_i64() + step.to_i64() * n + quotient as i64;
-    (T::from_i64(x), T::from_i64(rem as i64 - dy))
+    let (x, error) = if T::CLIP_MAX > i64::from(i32::MAX) {
+        let numerator = remainder.to_i64() as u64 * n as u64 + k as u64;
+        // `dy` is positive; `max` says so, which drops the division-by-zero panic.
+        let (quotient, rem) = div_rem_u64(numerator, dy.max(1) as u64);
+        // |step * n| <= |dx| + dy < 2^34: no overflow; the sum is a bound, which fits the lane.
+        (step * n + quotient as i64, rem as i64 - dy)
+    } else if dy < 1 << 15 && step.unsigned_abs() < 1 << 15 {
+        let (d, n) = (dy.max(1) as u32, n as u32);
+        let numerator = remainder.to_i64() as u32 * n + k as u32;
+        let (quotient, rem) = (numerator / d, numerator % d);
+        let moved = step as i32 * n as i32 + quotient as i32;
+        (i64::from(moved), i64::from(rem) - dy)
+    } else {
+        let remainder = remainder.to_i64();
+        let (x, error) = jump::<i64>(0, dy, step, remainder, rounding, n);
+        (x, error)
+    };
+    (T::from_i64(xa.to_i64() + x), T::from_i64(error))
 }
 
 /// An edge being walked one row at a time: bound, error term and increments.
@@ -225,6 +243,13 @@ mod tests {
             ((-100, -50), (31, 77)),
             ((0, 0), (1, 1000)),
             ((0, 0), (-1, 1000)),
+            // Either side of the 32-bit jump's limits: 2^15 rows, 2^15 pixels a row.
+            ((0, 0), (-(1 << 20), (1 << 15) - 1)),
+            ((0, 0), ((1 << 20) + 5, 1 << 15)),
+            ((7, 0), (32_767 * 40 + 39, 40)),
+            ((7, 0), (32_768 * 40, 40)),
+            ((7, 0), (-32_767 * 40 + 1, 40)),
+            ((7, 0), (-32_768 * 40 - 1, 40)),
         ];
         for (a, b) in edges {
             check::<i32>(a, b);
