@@ -86,7 +86,9 @@ impl SubSpan {
 /// value can differ between such drawings by what the sub-span approximation allows.
 ///
 /// `w` must be positive; values that are not count as the smallest positive `I16F16`. Only the
-/// ratios between the three matter. Texture modulation colours stay affine on screen.
+/// ratios between the three matter. Texture modulation colours stay affine on screen. An
+/// attribute more than 32,767 from the first vertex's (which 16.16 arithmetic cannot step
+/// across) counts as 32,767 from it.
 ///
 /// [`TextureStyle::with_perspective`]: crate::TextureStyle::with_perspective
 /// [`ShaderStyle::with_perspective`]: crate::ShaderStyle::with_perspective
@@ -320,12 +322,12 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         for i in 0..3 {
             weighted[i][0] = i64::from(q[i]);
             for k in 0..N {
-                // (a - a_0) * q rounded; below 2^35 in magnitude for 16.16 attributes.
-                let delta = values[i][k] - base[k];
-                let product = match i32::try_from(delta) {
-                    Ok(delta) => mul_i32_u32(delta, q[i]),
-                    Err(_) => delta.wrapping_mul(i64::from(q[i])),
-                };
+                // (a - a_0) * q rounded, with a - a_0 bounded (q is at most 1), so that every
+                // value the planes take inside the triangle (a mean of the vertices', give or
+                // take rounding) fits raw 16.16: the walk converts them without saturating.
+                // Only attributes 32,767 or more from the first vertex's meet the bound.
+                let delta = (values[i][k] - base[k]).clamp(-WEIGHTED_LIMIT, WEIGHTED_LIMIT);
+                let product = mul_i32_u32(delta as i32, q[i]);
                 weighted[i][k + 1] = (product + (1 << (Q_BITS - 1))) >> Q_BITS;
             }
         }
@@ -448,20 +450,19 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     }
 }
 
-/// `value >> 16` saturated to `i32`, from the two halves of `value`: a plane value in
-/// 2^-32 units back to raw 16.16.
+/// `value >> 16`: a plane value in 2^-32 units back to raw 16.16. Values inside a triangle
+/// fit `i32` ([`PerspectivePlanes::new`] bounds the vertices' to [`WEIGHTED_LIMIT`]), so
+/// nothing saturates (which cost Cortex-M4F four instructions a value, three values at every
+/// sub-span's end).
 #[inline(always)]
 fn high_bits(value: i64) -> i32 {
-    let high = (value >> 32) as i32;
-    let bits = (high << 16) | ((value as u32) >> 16) as i32;
-    if high >> 15 == high >> 31 {
-        bits
-    } else if high < 0 {
-        i32::MIN
-    } else {
-        i32::MAX
-    }
+    (value >> 16) as i32
 }
+
+/// The largest attribute change `a - a_0` from the first vertex, raw 16.16, and so the
+/// largest weighted one `(a - a_0) q`: one unit inside `i32`'s range, which leaves room for
+/// the planes' rounding inside the triangle (below half a unit, however large the triangle).
+const WEIGHTED_LIMIT: i64 = (1 << 31) - (1 << 16);
 
 /// Where a run's walk over its sub-spans is.
 #[derive(Copy, Clone, Debug)]
@@ -620,6 +621,60 @@ mod tests {
             normalised([I16F16::ZERO, -w, I16F16::DELTA]),
             [1 << Q_BITS; 3]
         );
+    }
+
+    /// What the walk relies on to convert without saturating: inside any triangle, whatever
+    /// its attributes and weights, every plane value fits raw 16.16 (`i32` after `>> 16`).
+    #[test]
+    #[allow(clippy::many_single_char_names)]
+    fn values_inside_any_triangle_fit_raw_16_16() {
+        use crate::Triangle;
+        use embedded_graphics::geometry::{Point, Size};
+        let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
+        let mut next = |range: u64| rng.next_u64() % range;
+        let window = Rectangle::new(Point::new(-1000, -1000), Size::new(2000, 2000));
+        let mut checked = 0;
+        while checked < 20_000 {
+            // Small to screen-sized to far beyond the window.
+            let reach = [40, 400, 1 << 20][next(3) as usize];
+            let mut corner = || {
+                Point::new(
+                    (next(2 * reach) as i64 - reach as i64) as i32,
+                    (next(2 * reach) as i64 - reach as i64) as i32,
+                )
+            };
+            let v = [corner(), corner(), corner()];
+            let triangle = Triangle { vertices: v };
+            // Any positive weights, any 16.16 attributes.
+            let w =
+                [(); 3].map(|()| I16F16::from_bits(1 + (next(i32::MAX as u64) as i32 >> next(31))));
+            let uv: [[i64; 2]; 3] =
+                [(); 3].map(|()| [(); 2].map(|()| i64::from(next(1 << 32) as u32 as i32)));
+            let Some(planes) = PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window)
+            else {
+                continue;
+            };
+            let p = v.map(|p| (i128::from(p.x), i128::from(p.y)));
+            for _ in 0..8 {
+                let x = (next(2000) as i32) - 1000;
+                let y = (next(2000) as i32) - 1000;
+                let (px, py) = (i128::from(x), i128::from(y));
+                let edge = |s: (i128, i128), t: (i128, i128)| {
+                    (t.0 - s.0) * (py - s.1) - (t.1 - s.1) * (px - s.0)
+                };
+                let e = [edge(p[1], p[2]), edge(p[2], p[0]), edge(p[0], p[1])];
+                if !(e.iter().all(|&e| e >= 0) || e.iter().all(|&e| e <= 0)) {
+                    continue; // outside
+                }
+                for value in planes.planes.at_exact(x, y) {
+                    assert!(
+                        i32::try_from(value >> 16).is_ok(),
+                        "{v:?} {w:?} {uv:?} at ({x}, {y}): {value}"
+                    );
+                }
+                checked += 1;
+            }
+        }
     }
 
     /// The documented bound: within 1/256 texel of the exact perspective coordinate, for `w`
