@@ -231,15 +231,22 @@ pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
 /// subtract over the quotient's bits only: about ten instructions a bit on Cortex-M0, whose
 /// library division takes some 130 whatever the quotient. Edges divide once each, and their
 /// quotients (pixels per row) are small: 45 instructions less per small sub-pixel triangle.
-/// Out of line: one copy.
+/// Quotients below 8 are counted out instead (1.3% less per small sub-pixel flat triangle on
+/// Cortex-M0). Out of line: one copy.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
-#[cold]
 #[inline(never)]
 pub(crate) fn div_rem_floor_by_bits(value: i32, divisor: i32) -> (i32, i32) {
     let d = divisor.max(1) as u32;
     let n = value.unsigned_abs();
     let (mut quotient, mut rest) = (0u32, n);
-    if n >= d {
+    if n >> 3 < d {
+        // Quotients below 8, the usual pixels per row: counted out, about four instructions
+        // a unit.
+        while rest >= d {
+            rest -= d;
+            quotient += 1;
+        }
+    } else {
         // The divisor doubled up to the quotient's top bit: at most `n`, no overflow.
         let (mut shifted, mut bit) = (d, 1u32);
         while shifted <= rest >> 1 {
