@@ -8,7 +8,7 @@ use embedded_graphics::{geometry::Point, primitives::Rectangle};
 use crate::{
     coverage::{CoverageSink, FillRule, SpanSink},
     geometry::Shape,
-    interpolate::Planes,
+    interpolate::{AreaMemo, Planes},
 };
 
 /// Words of set-up one slot holds: a Gouraud triangle's colour planes and depth plane (14),
@@ -286,13 +286,14 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
-    fn planes<const N: usize, const SETUP: u32>(
+    fn planes_kept<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.through_slot(|| self.shape.planes(values, bias, reference))
+        self.through_slot(|| self.shape.planes_kept(values, bias, reference, memo))
     }
 
     #[inline(always)]
@@ -301,8 +302,9 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.through_slot(|| self.shape.planes_with(values, bias, reference))
+        self.through_slot(|| self.shape.planes_with(values, bias, reference, memo))
     }
 
     #[inline(always)]

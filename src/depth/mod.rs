@@ -42,6 +42,7 @@ use embedded_graphics::{
 
 use crate::{
     geometry::Shape,
+    interpolate::AreaMemo,
     shading::{paint::on_screen, TriangleStyle},
     Error,
 };
@@ -440,6 +441,7 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
         S: TriangleStyle<Color = D::Color>,
     {
         let window = on_screen(self.target.bounding_box(), self.offset);
+        let memo = AreaMemo::new();
         let visitor = spans::DepthVisitor {
             target: self.target,
             buffer: self.buffer,
@@ -451,6 +453,8 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
             test: self.test,
             write: self.write,
             offset: self.offset,
+            // Cores with a divider make the area's reciprocal again (see `AreaMemo`).
+            memo: cfg!(not(target_has_atomic = "32")).then_some(&memo),
         };
         style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
     }

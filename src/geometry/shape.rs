@@ -8,7 +8,7 @@ use crate::{
         walk, walk_coverage, walk_erased, walk_subpixel, walk_subpixel_coverage, CoverageSink,
         FillRule, SpanSink,
     },
-    interpolate::Planes,
+    interpolate::{AreaMemo, Planes},
 };
 
 mod sealed {
@@ -66,16 +66,30 @@ pub trait Shape: sealed::Sealed {
 
     /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`.
     #[doc(hidden)]
+    #[inline(always)]
     fn planes<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
+    ) -> Option<Planes<N, SETUP>> {
+        self.planes_kept(values, bias, reference, None)
+    }
+
+    /// [`Shape::planes`], the area's reciprocal through `memo` (shared by the set-ups of
+    /// one triangle: its colours, then its depth).
+    #[doc(hidden)]
+    fn planes_kept<const N: usize, const SETUP: u32>(
+        &self,
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>>;
 
-    /// [`Shape::planes`] of the values `values` gives, computed only where the planes are
-    /// made (band rendering may have them already; the rare exact set-up takes them through
-    /// memory, where the common one need not).
+    /// [`Shape::planes_kept`] of the values `values` gives, computed only where the planes
+    /// are made (band rendering may have them already; the rare exact set-up takes them
+    /// through memory, where the common one need not).
     #[doc(hidden)]
     #[inline(always)]
     fn planes_with<const N: usize, const SETUP: u32>(
@@ -83,8 +97,9 @@ pub trait Shape: sealed::Sealed {
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.planes(values(), bias, reference)
+        self.planes_kept(values(), bias, reference, memo)
     }
 
     /// Planes of per-vertex `values` with their reference kept within `window`.
@@ -133,13 +148,14 @@ impl Shape for Triangle {
     }
 
     #[inline(always)]
-    fn planes<const N: usize, const SETUP: u32>(
+    fn planes_kept<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        Planes::new(self.vertices, values, bias, reference)
+        Planes::new(self.vertices, values, bias, reference, memo)
     }
 
     #[inline(always)]
@@ -148,15 +164,16 @@ impl Shape for Triangle {
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         // Values made in the branch that sets up, where the set-up is inline (the exact one
         // then no longer makes the small one store them first: Gouraud -3% per small triangle
         // on Cortex-M4F and x86-64); on Cortex-M0 both set-ups are calls that take them through
         // memory, and made there they measured 1% more per small depth-tested triangle.
         if cfg!(target_has_atomic = "32") {
-            Planes::new_with(self.vertices, values, bias, reference)
+            Planes::new_with(self.vertices, values, bias, reference, memo)
         } else {
-            self.planes(values(), bias, reference)
+            self.planes_kept(values(), bias, reference, memo)
         }
     }
 
@@ -227,17 +244,18 @@ impl Shape for SubPixelTriangle {
     }
 
     #[inline(always)]
-    fn planes<const N: usize, const SETUP: u32>(
+    fn planes_kept<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         if let Some(whole) = self.whole() {
-            return whole.planes(values, bias, reference);
+            return whole.planes_kept(values, bias, reference, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
-        Planes::new_subpixel(raw, values, bias, reference)
+        Planes::new_subpixel(raw, values, bias, reference, memo)
     }
 
     #[inline(always)]
@@ -246,16 +264,17 @@ impl Shape for SubPixelTriangle {
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         // As the whole-pixel triangle's.
         if !cfg!(target_has_atomic = "32") {
-            return self.planes(values(), bias, reference);
+            return self.planes_kept(values(), bias, reference, memo);
         }
         if let Some(whole) = self.whole() {
-            return whole.planes_with(values, bias, reference);
+            return whole.planes_with(values, bias, reference, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
-        Planes::new_subpixel_with(raw, values, bias, reference)
+        Planes::new_subpixel_with(raw, values, bias, reference, memo)
     }
 
     #[inline(always)]

@@ -171,7 +171,7 @@ where
         // Rounded: half a level of bias turns truncation into rounding to nearest. Dithered:
         // the threshold takes its place.
         let bias = if self.dither { 0 } else { 1 << 15 };
-        let planes = triangle.planes_with(values, bias, window.top_left)?;
+        let planes = triangle.planes_with(values, bias, window.top_left, visitor.area_memo())?;
         let painter = GouraudPainter {
             packed_steps: PackedShader::<C, N>::packed_steps(&planes.step),
             planes: TrackedPlanes::new(planes),

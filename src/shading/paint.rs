@@ -17,6 +17,7 @@ use super::spans::{shade_span, PixelShader};
 use crate::{
     coverage::{CoverageSink, FillRule, Span, SpanSink},
     geometry::Shape,
+    interpolate::AreaMemo,
     target::BlendTarget,
 };
 
@@ -88,6 +89,13 @@ pub trait PaintVisitor<C: PixelColor> {
 
     /// Draws with `painter`.
     fn visit<P: Painter<Color = C>>(self, painter: P) -> Self::Output;
+
+    /// Where the style's plane set-ups keep the area's reciprocal for the visitor's own
+    /// (a depth pass's plane): none by default.
+    #[inline(always)]
+    fn area_memo(&self) -> Option<&AreaMemo> {
+        None
+    }
 }
 
 mod sealed {
