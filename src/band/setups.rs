@@ -313,7 +313,8 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.through_slot(|| self.shape.planes_in(values, bias, window))
+        self.through_slot(|| self.shape.planes_in(values, bias, window, memo))
     }
 }

@@ -102,13 +102,15 @@ pub trait Shape: sealed::Sealed {
         self.planes_kept(values(), bias, reference, memo)
     }
 
-    /// Planes of per-vertex `values` with their reference kept within `window`.
+    /// Planes of per-vertex `values` with their reference kept within `window`, the area's
+    /// reciprocal through `memo` (see [`Shape::planes_kept`]).
     #[doc(hidden)]
     fn planes_in<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>>;
 }
 
@@ -183,8 +185,9 @@ impl Shape for Triangle {
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        Planes::new_in(self.vertices, values, bias, window)
+        Planes::new_in(self.vertices, values, bias, window, memo)
     }
 }
 
@@ -283,11 +286,12 @@ impl Shape for SubPixelTriangle {
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         if let Some(whole) = self.whole() {
-            return whole.planes_in(values, bias, window);
+            return whole.planes_in(values, bias, window, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
-        Planes::new_subpixel_in(raw, values, bias, window)
+        Planes::new_subpixel_in(raw, values, bias, window, memo)
     }
 }

@@ -331,7 +331,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
                 weighted[i][k + 1] = (product + (1 << (Q_BITS - 1))) >> Q_BITS;
             }
         }
-        let planes = triangle.planes_in(weighted, 0, window)?;
+        let planes = triangle.planes_in(weighted, 0, window, None)?;
         let shift = sub_span.trailing_zeros();
         let mut this = Self {
             planes: TrackedPlanes::new(planes),

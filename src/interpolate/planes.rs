@@ -132,6 +132,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Self> {
         // A triangle crossing the window's edge may have its first vertex outside: it starts
         // from another vertex, inside, when there is one (the same plane and the same
@@ -146,7 +147,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             }
         };
         match edges_within(vertices.map(wide), SMALL_BITS) {
-            Some(e) => Self::new_small(vertices[0], values, bias, e, None),
+            Some(e) => Self::new_small(vertices[0], values, bias, e, memo),
             None => Self::new_exact(vertices, values, bias, window.top_left),
         }
     }
@@ -193,6 +194,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         values: [[i64; N]; 3],
         bias: i64,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Self> {
         // From a vertex whose pixel lies in the window, as `new_in`.
         let pixel = |(x, y): (i32, i32)| Point::new(x >> 8, y >> 8);
@@ -206,7 +208,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         };
         let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         match edges_within(wide, SMALL_BITS) {
-            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e, None),
+            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e, memo),
             None => Self::new_large_subpixel(vertices, values, bias, window.top_left),
         }
     }
@@ -1301,7 +1303,7 @@ mod tests {
             assert_ne!(inside, 0, "{v:?}");
             let from_first =
                 Planes::<2, 46>::new(vertices, values, 3, Point::zero(), None).unwrap();
-            let planes = Planes::<2, 46>::new_in(vertices, values, 3, &window).unwrap();
+            let planes = Planes::<2, 46>::new_in(vertices, values, 3, &window, None).unwrap();
             let reference = vertices[inside];
             let at = planes.at_exact(reference.x, reference.y);
             for k in 0..2 {
@@ -1315,7 +1317,7 @@ mod tests {
             let raw = v.map(|(x, y)| (x * 256 + 37, y * 256 + 201));
             let from_first =
                 Planes::<2, 46>::new_subpixel(raw, values, 3, Point::zero(), None).unwrap();
-            let planes = Planes::<2, 46>::new_subpixel_in(raw, values, 3, &window).unwrap();
+            let planes = Planes::<2, 46>::new_subpixel_in(raw, values, 3, &window, None).unwrap();
             let at = planes.at_exact(reference.x, reference.y);
             // The vertex's pixel is 37/256 left of it and 201/256 up.
             for k in 0..2 {

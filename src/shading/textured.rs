@@ -13,7 +13,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{PerspectivePlanes, Planes, TrackedPlanes},
+    interpolate::{AreaMemo, PerspectivePlanes, Planes, TrackedPlanes},
     setup::lane::mul_small,
     texture::{
         Axis, Direct, Filter, Narrow, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
@@ -311,16 +311,22 @@ where
         // Perspective planes stay here, lent to the painter, which is moved around by value;
         // borrowed where they were returned (moving them out of the option is a copy).
         let corrected = self.perspective.filter(|p| !p.is_affine());
+        // The coordinates', the tint's and a depth pass's set-ups share the area's reciprocal:
+        // through the visitor's memo, or with a tint but no depth pass, a memo of its own.
+        let own = AreaMemo::new();
+        let memo = visitor
+            .area_memo()
+            .or_else(|| self.modulation.is_some().then_some(&own));
         let perspective_planes =
             corrected.and_then(|p| new_perspective_planes(triangle, self, p, window));
         let (coordinates, perspective) = match (&perspective_planes, corrected) {
             (Some(planes), _) => (Planes::zero(), Some(planes)),
             // Degenerate.
             (None, Some(_)) => return None,
-            (None, None) => (coordinate_planes(triangle, self, window)?, None),
+            (None, None) => (coordinate_planes(triangle, self, window, memo)?, None),
         };
         let tint = match self.modulation {
-            Some(colors) => Some(tint_planes(triangle, colors, window)?),
+            Some(colors) => Some(tint_planes(triangle, colors, window, memo)?),
             None => None,
         };
         let painter = TexturedPainter::new(self, coordinates, perspective, tint);
@@ -348,13 +354,15 @@ fn coordinate_planes<G, T>(
     triangle: &G,
     style: &TextureStyle<T>,
     window: &Rectangle,
+    memo: Option<&AreaMemo>,
 ) -> Option<Planes<2, COORDINATE_BITS>>
 where
     G: Shape,
     T: TexelSource,
     T::Color: ChannelColor,
 {
-    let mut planes = triangle.planes_in(raw_coordinates(style), rounding_bias(style), window)?;
+    let (values, bias) = (raw_coordinates(style), rounding_bias(style));
+    let mut planes = triangle.planes_in(values, bias, window, memo)?;
     // Gradients are rounded to 2^-46, so a value `dx` pixels across and `dy` down from the
     // reference (both within the window), then `k` pixels along a span, is off by at most
     // (|dx| + |dy| + k + 1) / 2 units. Adding that much keeps every value at or above the
@@ -415,6 +423,7 @@ fn tint_planes<G, C, const M: usize>(
     triangle: &G,
     colors: [C; 3],
     window: &Rectangle,
+    memo: Option<&AreaMemo>,
 ) -> Option<Planes<M>>
 where
     G: Shape,
@@ -429,7 +438,7 @@ where
         })
     });
     // From the first vertex when the triangle is small, as Gouraud colours.
-    triangle.planes(values, 0, window.top_left)
+    triangle.planes_kept(values, 0, window.top_left, memo)
 }
 
 /// The painter of a textured triangle, one type for every filter, wrap, modulation and
