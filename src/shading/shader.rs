@@ -306,7 +306,8 @@ where
         visitor: V,
     ) -> Option<V::Output> {
         let shade = |position, raw| fragment_shade(&self.shader, position, raw);
-        let shader = PlanesShader::new(triangle, self.raw_attributes(), 0, window.top_left, shade)?;
+        let (values, memo) = (self.raw_attributes(), visitor.area_memo());
+        let shader = PlanesShader::new(triangle, values, 0, window.top_left, memo, shade)?;
         Some(visitor.visit(ShaderPainter(shader)))
     }
 }

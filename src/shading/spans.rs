@@ -3,7 +3,11 @@
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
 use super::{channels::per_channel, paint::stored};
-use crate::{coverage::Span, geometry::Shape, interpolate::Planes};
+use crate::{
+    coverage::Span,
+    geometry::Shape,
+    interpolate::{AreaMemo, Planes},
+};
 
 /// Computes colours pixel by pixel along a span, by additions.
 pub(crate) trait PixelShader {
@@ -97,18 +101,19 @@ pub(crate) struct PlanesShader<const N: usize, F> {
 
 impl<const N: usize, F> PlanesShader<N, F> {
     /// Planes through `values` (raw 16.16, one array per vertex, in the triangle's vertex
-    /// order, `bias` added to all) for drawing into a window at `origin`; `None` for degenerate
-    /// triangles.
+    /// order, `bias` added to all) for drawing into a window at `origin`, the area's
+    /// reciprocal through `memo`; `None` for degenerate triangles.
     #[inline(always)]
     pub(crate) fn new<G: Shape>(
         triangle: &G,
         values: [[i64; N]; 3],
         bias: i64,
         origin: Point,
+        memo: Option<&AreaMemo>,
         shade: F,
     ) -> Option<Self> {
         Some(Self {
-            planes: triangle.planes(values, bias, origin)?,
+            planes: triangle.planes_kept(values, bias, origin, memo)?,
             shade,
         })
     }
