@@ -286,14 +286,14 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
-    fn planes_kept<const N: usize, const SETUP: u32>(
+    fn planes<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
         reference: Point,
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.through_slot(|| self.shape.planes_kept(values, bias, reference, memo))
+        self.through_slot(|| self.shape.planes(values, bias, reference, memo))
     }
 
     #[inline(always)]

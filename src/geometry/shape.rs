@@ -64,22 +64,11 @@ pub trait Shape: sealed::Sealed {
     #[doc(hidden)]
     fn sample_rows(&self) -> Option<(i64, i64)>;
 
-    /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`.
+    /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`, the area's
+    /// reciprocal through `memo` when there is one (shared by the set-ups of one triangle:
+    /// its colours, then its depth).
     #[doc(hidden)]
-    #[inline(always)]
     fn planes<const N: usize, const SETUP: u32>(
-        &self,
-        values: [[i64; N]; 3],
-        bias: i64,
-        reference: Point,
-    ) -> Option<Planes<N, SETUP>> {
-        self.planes_kept(values, bias, reference, None)
-    }
-
-    /// [`Shape::planes`], the area's reciprocal through `memo` (shared by the set-ups of
-    /// one triangle: its colours, then its depth).
-    #[doc(hidden)]
-    fn planes_kept<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
@@ -87,7 +76,7 @@ pub trait Shape: sealed::Sealed {
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>>;
 
-    /// [`Shape::planes_kept`] of the values `values` gives, computed only where the planes
+    /// [`Shape::planes`] of the values `values` gives, computed only where the planes
     /// are made (band rendering may have them already; the rare exact set-up takes them
     /// through memory, where the common one need not).
     #[doc(hidden)]
@@ -99,11 +88,11 @@ pub trait Shape: sealed::Sealed {
         reference: Point,
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.planes_kept(values(), bias, reference, memo)
+        self.planes(values(), bias, reference, memo)
     }
 
     /// Planes of per-vertex `values` with their reference kept within `window`, the area's
-    /// reciprocal through `memo` (see [`Shape::planes_kept`]).
+    /// reciprocal through `memo` (see [`Shape::planes`]).
     #[doc(hidden)]
     fn planes_in<const N: usize, const SETUP: u32>(
         &self,
@@ -150,7 +139,7 @@ impl Shape for Triangle {
     }
 
     #[inline(always)]
-    fn planes_kept<const N: usize, const SETUP: u32>(
+    fn planes<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
@@ -175,7 +164,7 @@ impl Shape for Triangle {
         if cfg!(target_has_atomic = "32") {
             Planes::new_with(self.vertices, values, bias, reference, memo)
         } else {
-            self.planes_kept(values(), bias, reference, memo)
+            self.planes(values(), bias, reference, memo)
         }
     }
 
@@ -247,7 +236,7 @@ impl Shape for SubPixelTriangle {
     }
 
     #[inline(always)]
-    fn planes_kept<const N: usize, const SETUP: u32>(
+    fn planes<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],
         bias: i64,
@@ -255,7 +244,7 @@ impl Shape for SubPixelTriangle {
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         if let Some(whole) = self.whole() {
-            return whole.planes_kept(values, bias, reference, memo);
+            return whole.planes(values, bias, reference, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
         Planes::new_subpixel(raw, values, bias, reference, memo)
@@ -271,7 +260,7 @@ impl Shape for SubPixelTriangle {
     ) -> Option<Planes<N, SETUP>> {
         // As the whole-pixel triangle's.
         if !cfg!(target_has_atomic = "32") {
-            return self.planes_kept(values(), bias, reference, memo);
+            return self.planes(values(), bias, reference, memo);
         }
         if let Some(whole) = self.whole() {
             return whole.planes_with(values, bias, reference, memo);

@@ -113,7 +113,7 @@ impl<const N: usize, F> PlanesShader<N, F> {
         shade: F,
     ) -> Option<Self> {
         Some(Self {
-            planes: triangle.planes_kept(values, bias, origin, memo)?,
+            planes: triangle.planes(values, bias, origin, memo)?,
             shade,
         })
     }

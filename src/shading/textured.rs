@@ -438,7 +438,7 @@ where
         })
     });
     // From the first vertex when the triangle is small, as Gouraud colours.
-    triangle.planes_kept(values, 0, window.top_left, memo)
+    triangle.planes(values, 0, window.top_left, memo)
 }
 
 /// The painter of a textured triangle, one type for every filter, wrap, modulation and
