@@ -11,7 +11,7 @@
 use embedded_graphics::primitives::Rectangle;
 use fixed::types::I16F16;
 
-use super::{planes::widening_mul, TrackedPlanes};
+use super::{planes::widening_mul, AreaMemo, TrackedPlanes};
 use crate::geometry::Shape;
 use crate::setup::lane::mul_small;
 
@@ -303,8 +303,8 @@ pub(crate) struct PerspectivePlanes<const P: usize, const N: usize> {
 
 impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     /// Planes of `N` attributes (raw 16.16, one array per vertex, `bias` added to all) with
-    /// weights `w`, for sub-spans of `sub_span` pixels (8, 16 or 32), drawn into `window`;
-    /// `None` for degenerate triangles. Out of line: rarer than affine texturing, and once
+    /// weights `w`, for sub-spans of `sub_span` pixels (8, 16 or 32), drawn into `window`, the
+    /// area's reciprocal through `memo`; `None` for degenerate triangles. Out of line: rarer than affine texturing, and once
     /// per triangle.
     #[inline(never)]
     pub(crate) fn new<G: Shape>(
@@ -314,6 +314,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         w: [I16F16; 3],
         sub_span: u32,
         window: &Rectangle,
+        memo: Option<&AreaMemo>,
     ) -> Option<Self> {
         debug_assert_eq!(P, N + 1);
         let q = normalised(w);
@@ -331,7 +332,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
                 weighted[i][k + 1] = (product + (1 << (Q_BITS - 1))) >> Q_BITS;
             }
         }
-        let planes = triangle.planes_in(weighted, 0, window, None)?;
+        let planes = triangle.planes_in(weighted, 0, window, memo)?;
         let shift = sub_span.trailing_zeros();
         let mut this = Self {
             planes: TrackedPlanes::new(planes),
@@ -650,7 +651,8 @@ mod tests {
                 [(); 3].map(|()| I16F16::from_bits(1 + (next(i32::MAX as u64) as i32 >> next(31))));
             let uv: [[i64; 2]; 3] =
                 [(); 3].map(|()| [(); 2].map(|()| i64::from(next(1 << 32) as u32 as i32)));
-            let Some(planes) = PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window)
+            let Some(planes) =
+                PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window, None)
             else {
                 continue;
             };
@@ -696,7 +698,8 @@ mod tests {
             let w = [(); 3].map(|()| I16F16::from_bits((1 << 12) + next(1 << 20) as i32));
             let origin = next(1 << 28) - (1 << 27);
             let uv: [[i64; 2]; 3] = [(); 3].map(|()| [(); 2].map(|()| origin + next(4095 << 16)));
-            let Some(planes) = PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window)
+            let Some(planes) =
+                PerspectivePlanes::<3, 2>::new(&triangle, uv, 0, w, 16, &window, None)
             else {
                 continue;
             };

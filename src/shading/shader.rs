@@ -271,7 +271,7 @@ macro_rules! perspective_shader_style {
                 let values = self.style.raw_attributes();
                 let (w, sub_span) = (self.perspective.w, self.perspective.sub_span.pixels());
                 let planes =
-                    PerspectivePlanes::<$p, $n>::new(triangle, values, 0, w, sub_span, window);
+                    PerspectivePlanes::<$p, $n>::new(triangle, values, 0, w, sub_span, window, visitor.area_memo());
                 let painter = PerspectiveShaderPainter {
                     planes: planes.as_ref()?,
                     shader: &self.style.shader,

@@ -318,7 +318,7 @@ where
             .area_memo()
             .or_else(|| self.modulation.is_some().then_some(&own));
         let perspective_planes =
-            corrected.and_then(|p| new_perspective_planes(triangle, self, p, window));
+            corrected.and_then(|p| new_perspective_planes(triangle, self, p, window, memo));
         let (coordinates, perspective) = match (&perspective_planes, corrected) {
             (Some(planes), _) => (Planes::zero(), Some(planes)),
             // Degenerate.
@@ -406,6 +406,7 @@ fn new_perspective_planes<G, T>(
     style: &TextureStyle<T>,
     perspective: Perspective,
     window: &Rectangle,
+    memo: Option<&AreaMemo>,
 ) -> Option<PerspectivePlanes<3, 2>>
 where
     G: Shape,
@@ -414,7 +415,15 @@ where
 {
     let (values, bias) = (raw_coordinates(style), rounding_bias(style));
     let sub_span = perspective.sub_span.pixels();
-    PerspectivePlanes::new(triangle, values, bias, perspective.w, sub_span, window)
+    PerspectivePlanes::new(
+        triangle,
+        values,
+        bias,
+        perspective.w,
+        sub_span,
+        window,
+        memo,
+    )
 }
 
 /// The planes of the modulation factors: each channel as a 16.16 fraction of its maximum.
