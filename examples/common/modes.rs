@@ -225,14 +225,38 @@ pub fn coordinates(t: &SceneTriangle) -> [[I16F16; 2]; 3] {
 /// Depths of triangle `k` of `count` in the depth modes: each triangle nearer than those
 /// before, depths falling by `gap` from one triangle to the next and by less across each.
 pub fn layered_depths(k: usize, count: usize) -> [u16; 3] {
-    let gap = (60_000 / count.max(1)).max(1) as u32;
-    let near = 60_000u32.saturating_sub(k as u32 * gap);
-    [
-        near,
-        near.saturating_sub(gap / 3),
-        near.saturating_sub(gap * 2 / 3),
-    ]
-    .map(|d| d as u16)
+    Layers::new(count).depths(k)
+}
+
+/// [`layered_depths`] with its divisions made once per frame: per triangle they were library
+/// calls on Cortex-M0, counted as drawing (and hoisted out of the loop or not, as the
+/// compiler chose for each build).
+#[derive(Copy, Clone)]
+pub struct Layers {
+    gap: u32,
+    third: u32,
+    two_thirds: u32,
+}
+
+impl Layers {
+    pub fn new(count: usize) -> Self {
+        let gap = (60_000 / count.max(1)).max(1) as u32;
+        Self {
+            gap,
+            third: gap / 3,
+            two_thirds: gap * 2 / 3,
+        }
+    }
+
+    pub fn depths(&self, k: usize) -> [u16; 3] {
+        let near = 60_000u32.saturating_sub(k as u32 * self.gap);
+        [
+            near,
+            near.saturating_sub(self.third),
+            near.saturating_sub(self.two_thirds),
+        ]
+        .map(|d| d as u16)
+    }
 }
 
 /// Everything a frame draws with besides the frame itself.
@@ -401,7 +425,7 @@ fn draw_gouraud_z<G: Shape>(
     depths: &mut [u16],
     shape: fn(&SceneTriangle) -> G,
 ) {
-    let count = triangles.len();
+    let layers = core::hint::black_box(Layers::new(triangles.len()));
     depths.fill(u16::MAX);
     let Ok(mut zbuffer) = DepthBuffer::new(depths, WIDTH, HEIGHT) else {
         return;
@@ -411,7 +435,7 @@ fn draw_gouraud_z<G: Shape>(
     };
     for (k, t) in triangles.iter().enumerate() {
         let style = GouraudStyle::new(t.vertex_colors);
-        let _ = layered.draw(&shape(t), layered_depths(k, count), &style);
+        let _ = layered.draw(&shape(t), layers.depths(k), &style);
     }
 }
 
@@ -467,13 +491,13 @@ fn draw_bands<'w, const N: usize, K: SetupCache>(
     work: &'w mut Workspace<'_, N>,
     configure: impl FnOnce(Bands<'w, Rgb565>) -> Bands<'w, Rgb565, Rgb565, K>,
 ) {
-    let count = triangles.len();
+    let layers = core::hint::black_box(Layers::new(triangles.len()));
     let list = &mut *work.list;
     list.clear();
     for (k, t) in triangles.iter().enumerate() {
         let [a, b, c] = t.vertices;
         let style = SceneStyle::Gouraud(GouraudStyle::new(t.vertex_colors));
-        let _ = list.push_with_depth(Triangle::new(a, b, c), layered_depths(k, count), style);
+        let _ = list.push_with_depth(Triangle::new(a, b, c), layers.depths(k), style);
     }
     let bands = Bands::new(work.band, WIDTH, BAND_ROWS)
         .and_then(|bands| bands.with_depth(work.depth_band))
