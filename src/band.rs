@@ -427,9 +427,7 @@ where
 
 /// The rows of `screen` the triangle's samples can lie on.
 fn covered_rows<G: Shape>(triangle: &G, screen: &Rectangle) -> core::ops::Range<i32> {
-    let Some((top, bottom)) = triangle.sample_rows() else {
-        return 0..0;
-    };
+    let (top, bottom) = triangle.sample_rows();
     let screen_top = i64::from(screen.top_left.y);
     let screen_bottom = screen_top + i64::from(screen.size.height);
     // Rows are pixel rows: the bottom vertex's row is included (inclusive fill rule).

@@ -31,7 +31,7 @@ fn color(rng: &mut Rng) -> Rgb565 {
 }
 
 /// A random scene of 1 to 40 triangles of every kind, some depth-tested, some reaching far off
-/// screen.
+/// screen, some degenerate.
 fn random_scene<'a>(
     rng: &mut Rng,
     texture: Texels<'a, Rgb565>,
@@ -48,6 +48,12 @@ fn random_scene<'a>(
                     rng.range(-reach, H as i32 + reach),
                 )
         });
+        // Some degenerate: a vertex on the line through the other two, or on another.
+        let mut v = v;
+        if rng.range(0, 7) == 0 {
+            let k = rng.range(-2, 2);
+            v[2] = v[0] + (v[1] - v[0]) * k;
+        }
         let triangle = Triangle { vertices: v };
         let style = match rng.range(0, 3) {
             0 => SceneStyle::Flat(FlatStyle::new(color(rng))),

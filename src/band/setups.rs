@@ -281,7 +281,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
-    fn sample_rows(&self) -> Option<(i64, i64)> {
+    fn sample_rows(&self) -> (i64, i64) {
         self.shape.sample_rows()
     }
 

@@ -60,9 +60,10 @@ pub trait Shape: sealed::Sealed {
     fn walk_area<K: CoverageSink>(&self, clip: &Rectangle, sink: &mut K) -> Result<(), K::Error>;
 
     /// The pixel rows the triangle can cover, with or without anti-aliasing, first and last
-    /// (both included); `None` for degenerate triangles.
+    /// (both included). Degenerate triangles have rows too (they cover none of them): telling
+    /// them apart takes two 64-bit products per triangle, where drawing rejects them anyway.
     #[doc(hidden)]
-    fn sample_rows(&self) -> Option<(i64, i64)>;
+    fn sample_rows(&self) -> (i64, i64);
 
     /// Planes of per-vertex `values` (with `bias`) evaluated from `reference`, the area's
     /// reciprocal through `memo` when there is one (shared by the set-ups of one triangle:
@@ -105,12 +106,9 @@ pub trait Shape: sealed::Sealed {
 
 impl Shape for Triangle {
     #[inline]
-    fn sample_rows(&self) -> Option<(i64, i64)> {
-        if self.is_degenerate() {
-            return None;
-        }
+    fn sample_rows(&self) -> (i64, i64) {
         let ys = self.vertices.map(|p| i64::from(p.y));
-        Some((ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2])))
+        (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]))
     }
 
     #[inline(always)]
@@ -197,15 +195,12 @@ impl SubPixelTriangle {
 
 impl Shape for SubPixelTriangle {
     #[inline]
-    fn sample_rows(&self) -> Option<(i64, i64)> {
-        if self.is_degenerate() {
-            return None;
-        }
+    fn sample_rows(&self) -> (i64, i64) {
         let ys = self.vertices.map(|p| i64::from(p.y.to_bits()));
         let (top, bottom) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
         // Rows whose pixel squares (half a pixel either side of the samples) the vertices
         // reach: anti-aliasing covers those.
-        Some(((top - 128) >> 8, (bottom + 128) >> 8))
+        ((top - 128) >> 8, (bottom + 128) >> 8)
     }
 
     #[inline(always)]
