@@ -58,7 +58,7 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
         let mut sink = DepthSpans {
             target: self.target,
             buffer: self.buffer,
-            painter,
+            painter: &painter,
             depth: TrackedPlanes::new(depth),
             origin: (self.window.top_left.x, self.window.top_left.y),
             flip,
@@ -72,10 +72,13 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
 }
 
 /// Tests, writes and paints each span.
-struct DepthSpans<'a, 'b, D, P> {
+struct DepthSpans<'a, 'b, 'p, D, P> {
     target: &'a mut D,
     buffer: &'a mut DepthBuffer<'b>,
-    painter: P,
+    /// Borrowed where the style handed it over: the sink lives in memory for the type-erased
+    /// walk, and holding the painter by value copied it in, word by word, for every triangle
+    /// (and in bands for every band a triangle touches).
+    painter: &'p P,
     depth: TrackedPlanes<1>,
     /// The window's top-left corner: the buffer's (0, 0).
     origin: (i32, i32),
@@ -87,7 +90,7 @@ struct DepthSpans<'a, 'b, D, P> {
     write: bool,
 }
 
-impl<D, P> SpanSink for DepthSpans<'_, '_, D, P>
+impl<D, P> SpanSink for DepthSpans<'_, '_, '_, D, P>
 where
     D: DrawTarget,
     P: Painter<Color = D::Color>,
