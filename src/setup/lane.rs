@@ -111,7 +111,7 @@ impl Lane for i32 {
 
     #[inline(always)]
     fn div_rem_floor(self, divisor: Self) -> (Self, Self) {
-        floor_div_rem!(self, divisor)
+        div_rem_floor_compact(self, divisor)
     }
 
     #[inline]
@@ -214,56 +214,37 @@ impl Lane for i64 {
 }
 
 /// `(floor(value / divisor), value mod divisor)` for a positive divisor, for quotients expected
-/// small: by [`div_rem_floor_by_bits`] on cores without a divider (Cortex-M0/M0+: no
-/// compare-and-swap either, which is what `target_has_atomic` can tell), by the divide
-/// instruction elsewhere. Not in the whole-pixel walk: there it measured 4% less per small
-/// flat triangle on Cortex-M0 but moved the packed Gouraud loop's registers, +3% per pixel.
+/// small (an edge's pixels per row): by [`div_rem_floor_counted`] on cores without a divider
+/// (Cortex-M0/M0+: no compare-and-swap either, which is what `target_has_atomic` can tell), by
+/// the divide instruction elsewhere. The 32-bit lane's division (every edge of a whole-pixel
+/// triangle steeper than one pixel a row) and the sub-pixel edges' start take it.
 #[inline(always)]
 pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
     if cfg!(target_has_atomic = "32") {
         floor_div_rem!(value, divisor)
     } else {
-        div_rem_floor_by_bits(value, divisor)
+        div_rem_floor_counted(value, divisor)
     }
 }
 
-/// `(floor(value / divisor), value mod divisor)` for a positive divisor by shift and
-/// subtract over the quotient's bits only: about ten instructions a bit on Cortex-M0, whose
-/// library division takes some 130 whatever the quotient. Edges divide once each, and their
-/// quotients (pixels per row) are small: 45 instructions less per small sub-pixel triangle.
-/// Quotients below 8 are counted out instead (1.3% less per small sub-pixel flat triangle on
-/// Cortex-M0). Out of line: one copy.
+/// [`div_rem_floor_compact`] on Cortex-M0: quotients below 8 counted out, about four
+/// instructions a unit, where the library's division takes some 100 to 130 whatever the
+/// quotient (4% less per small flat triangle, 1.3% per small Gouraud one); larger ones by
+/// that division, which is linked anyway (a shift-and-subtract loop for them cost the flat
+/// share 180 bytes for no measurable gain). Out of line: one copy.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(never)]
-pub(crate) fn div_rem_floor_by_bits(value: i32, divisor: i32) -> (i32, i32) {
+pub(crate) fn div_rem_floor_counted(value: i32, divisor: i32) -> (i32, i32) {
     let d = divisor.max(1) as u32;
     let n = value.unsigned_abs();
     let (mut quotient, mut rest) = (0u32, n);
     if n >> 3 < d {
-        // Quotients below 8, the usual pixels per row: counted out, about four instructions
-        // a unit.
         while rest >= d {
             rest -= d;
             quotient += 1;
         }
     } else {
-        // The divisor doubled up to the quotient's top bit: at most `n`, no overflow.
-        let (mut shifted, mut bit) = (d, 1u32);
-        while shifted <= rest >> 1 {
-            shifted <<= 1;
-            bit <<= 1;
-        }
-        loop {
-            if rest >= shifted {
-                rest -= shifted;
-                quotient |= bit;
-            }
-            if bit == 1 {
-                break;
-            }
-            shifted >>= 1;
-            bit >>= 1;
-        }
+        (quotient, rest) = (n / d, n % d);
     }
     if value >= 0 {
         (quotient as i32, rest as i32)
@@ -525,10 +506,10 @@ mod tests {
     }
 
     #[test]
-    fn division_by_bits_is_the_floor_division() {
+    fn counted_division_is_the_floor_division() {
         let check = |n: i32, d: i32| {
             let want = (n.div_euclid(d), n.rem_euclid(d));
-            assert_eq!(div_rem_floor_by_bits(n, d), want, "{n} / {d}");
+            assert_eq!(div_rem_floor_counted(n, d), want, "{n} / {d}");
         };
         let edges = [
             0,
