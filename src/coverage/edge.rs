@@ -90,9 +90,7 @@ fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_i
         let moved = step as i32 * n as i32 + quotient as i32;
         (i64::from(moved), i64::from(rem) - dy)
     } else {
-        let remainder = remainder.to_i64();
-        let (x, error) = jump::<i64>(0, dy, step, remainder, rounding, n);
-        (x, error)
+        jump::<i64>(0, dy, step, remainder.to_i64(), rounding, n)
     };
     (T::from_i64(xa.to_i64() + x), T::from_i64(error))
 }
