@@ -308,8 +308,8 @@ pub(crate) struct PerspectivePlanes<const P: usize, const N: usize> {
 impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
     /// Planes of `N` attributes (raw 16.16, one array per vertex, `bias` added to all) with
     /// weights `w`, for sub-spans of `sub_span` pixels (8, 16 or 32), drawn into `window`, the
-    /// area's reciprocal through `memo`; `None` for degenerate triangles. Out of line: rarer than affine texturing, and once
-    /// per triangle.
+    /// area's reciprocal through `memo`; `None` for degenerate triangles. Out of line: rarer
+    /// than affine texturing, and once per triangle.
     #[inline(never)]
     pub(crate) fn new<G: Shape>(
         triangle: &G,

@@ -268,10 +268,11 @@ macro_rules! perspective_shader_style {
                 if self.perspective.is_affine() {
                     return self.style.paint(triangle, window, visitor);
                 }
-                let values = self.style.raw_attributes();
+                let (values, memo) = (self.style.raw_attributes(), visitor.area_memo());
                 let (w, sub_span) = (self.perspective.w, self.perspective.sub_span.pixels());
-                let planes =
-                    PerspectivePlanes::<$p, $n>::new(triangle, values, 0, w, sub_span, window, visitor.area_memo());
+                let planes = PerspectivePlanes::<$p, $n>::new(
+                    triangle, values, 0, w, sub_span, window, memo,
+                );
                 let painter = PerspectiveShaderPainter {
                     planes: planes.as_ref()?,
                     shader: &self.style.shader,
