@@ -284,7 +284,7 @@ impl<C: PixelColor, const N: usize, T: TexelSource<Color = C>, G: Shape> Scene<'
 
     /// Appends a triangle drawn at `opacity` (255: opaque) over what the band holds, as
     /// [`Framebuffer::translucent`](crate::Framebuffer::translucent) draws over a frame: each
-    /// pixel blended once, within half a level of the exact blend. Not depth-tested. Render
+    /// pixel blended once, by [`blend`](crate::target::blend). Not depth-tested. Render
     /// the scene with [`Bands::render_blended`].
     ///
     /// # Errors

@@ -1,5 +1,5 @@
 //! Translucent drawing: every covered pixel is the exact blend of the drawn colour over what
-//! was there (within half a level per channel), blended once, and nothing else changes;
+//! was there (within 3/5 of a level per channel: `Rgb565` blends in 256ths), blended once, and nothing else changes;
 //! opacity 255 draws what opaque drawing draws.
 
 mod common;
@@ -21,14 +21,16 @@ use trirast::{
 const W: u32 = 40;
 const H: u32 = 30;
 
-/// True when each channel of `got` is within half a level of the exact blend of `source`
-/// over `under` at `opacity`: `|got - (s a + d (255 - a)) / 255| <= 1/2`.
+/// True when each channel of `got` is within 3/5 of a level of the exact blend of `source`
+/// over `under` at `opacity`: `|got - (s a + d (255 - a)) / 255| <= 3/5` (the documented
+/// bound for channels of up to 6 bits).
 fn exact_blend(got: Rgb565, source: Rgb565, under: Rgb565, opacity: u8) -> bool {
     let (a, b) = (i64::from(opacity), 255 - i64::from(opacity));
     let (g, s, d) = (got.channels(), source.channels(), under.channels());
     (0..3).all(|k| {
         let numerator = i64::from(s[k]) * a + i64::from(d[k]) * b;
-        (510 * i64::from(g[k]) - 2 * numerator).abs() <= 255
+        // |g - n / 255| <= 3/5  <=>  |1275 g - 5 n| <= 765
+        (1275 * i64::from(g[k]) - 5 * numerator).abs() <= 765
     })
 }
 
