@@ -56,13 +56,20 @@ impl Q {
 
 /// The exact area of pixel `p`'s square (side 1, centred on `p`) inside triangle `v`.
 fn exact_coverage(v: [Point; 3], p: Point) -> f64 {
-    // Doubled coordinates: vertices and the square's sides are integers; areas are 4x.
+    // Doubled coordinates from the pixel's centre (areas do not change when moved): vertices
+    // and the square's sides are small integers, so the rationals stay within i128 for
+    // vertices millions of pixels out. Areas are 4x.
     let mut polygon: Vec<(Q, Q)> = v
         .iter()
-        .map(|q| (Q::int(2 * i64::from(q.x)), Q::int(2 * i64::from(q.y))))
+        .map(|q| {
+            let (x, y) = (
+                i64::from(q.x) - i64::from(p.x),
+                i64::from(q.y) - i64::from(p.y),
+            );
+            (Q::int(2 * x), Q::int(2 * y))
+        })
         .collect();
-    let (x0, x1) = (2 * i64::from(p.x) - 1, 2 * i64::from(p.x) + 1);
-    let (y0, y1) = (2 * i64::from(p.y) - 1, 2 * i64::from(p.y) + 1);
+    let (x0, x1, y0, y1) = (-1, 1, -1, 1);
     // Keep the side where (coordinate - bound) * sign >= 0.
     for (on_x, bound, sign) in [
         (true, x0, 1),
@@ -183,6 +190,9 @@ fn triangle() -> impl Strategy<Value = [Point; 3]> {
         1 => (point(-6..=30), point(-6..=30), -30..30i32)
             .prop_map(|(a, b, dx)| [a, Point::new(a.x + dx, a.y), b]),
         1 => (point(-6..=30), point(-6..=30)).prop_map(|(a, b)| [a, b, a + (b - a) * 2]),
+        // Far vertices (beyond 65,536 pixels of the clip, which the walk takes in 64-bit
+        // arithmetic), edges crossing the clip.
+        2 => [point(-120_000..=120_000), point(-6..=30), point(-120_000..=120_000)],
     ]
 }
 
@@ -196,6 +206,13 @@ proptest! {
     #[test]
     fn coverage_is_the_exact_area_within_the_bound(v in triangle()) {
         check_against_exact(v, clip());
+    }
+
+    /// The same anywhere a clip can be: triangles and clip moved together up to four million
+    /// pixels (the walk counts from the clip's corner), far vertices included.
+    #[test]
+    fn coverage_is_exact_wherever_the_clip_is(v in triangle(), offset in point(-4_000_000..=4_000_000)) {
+        check_against_exact(v.map(|p| p + offset), Rectangle::new(offset, clip().size));
     }
 }
 

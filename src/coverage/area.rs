@@ -10,13 +10,21 @@
 //! as one run; only the columns a boundary crosses are computed pixel by pixel.
 //!
 //! Arithmetic is fixed point with 12 fraction bits (1/4096 pixel), in coordinates shifted by half
-//! a pixel so that pixel `(x, y)`'s square is `[x, x + 1] x [y, y + 1]`. Boundaries are stepped
+//! a pixel so that pixel `(x, y)`'s square is `[x, x + 1] x [y, y + 1]`. Triangles within 65,536
+//! pixels of the clip's corner (every one a screen shows whole) are walked in `i32` from that
+//! corner, the rest in `i64` (see [`Coord`]). Boundaries are stepped
 //! from row to row by quotient and remainder (one division per edge, none per row); where a
 //! boundary crosses a column is found with a per-edge reciprocal. Positions and crossings are
 //! kept to within 1/4096 pixel, each costing a pixel at most 3/4096 of its area per boundary
 //! piece, of which at most four cross a pixel: each coverage is within 1/256 of the exact
 //! area before rounding to 1/255 (`tests/antialias.rs` checks it against exact rational
 //! clipping).
+
+use core::{
+    fmt::Debug,
+    iter::Sum,
+    ops::{Add, AddAssign, Shl, Shr, Sub},
+};
 
 use embedded_graphics::primitives::Rectangle;
 
@@ -37,40 +45,138 @@ const REACH: i64 = 1 << 22;
 const MAX_VERTICES: usize = 3;
 /// Most edges of a chain, and so most pieces of a chain in a row.
 const MAX_EDGES: usize = MAX_VERTICES - 1;
+/// Vertices within this many units (1/4096 pixel) of the clip's corner, 65,536 pixels, are
+/// walked in `i32`: edges then span under 2^29 units, so positions, remainders and their sums
+/// stay within 2^31.
+const NARROW_REACH: i64 = 1 << 28;
+/// Columns and rows of the clip walked in `i32` (from its corner): their positions, under
+/// 2^29 units, fit too.
+const NARROW_CLIP: i64 = 1 << 17;
+
+/// The integer type of positions and of the per-row state: `i32` for triangles near the clip,
+/// where each addition and comparison is one instruction on 32-bit cores (two and more for
+/// `i64`: Cortex-M0 anti-aliased small triangles took a third more instructions), `i64` for
+/// any other. Set-ups (one per edge) compute in `i64` either way and narrow what they keep.
+trait Coord:
+    Copy
+    + Ord
+    + Default
+    + Debug
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + AddAssign
+    + Shl<u32, Output = Self>
+    + Shr<u32, Output = Self>
+    + Sum
+{
+    const ZERO: Self;
+    /// A pixel, `1 << FRAC`.
+    const PIXEL: Self;
+    /// A pixel less one unit: added before a shift, rounds up to whole pixels.
+    const PIXEL_LESS_ONE: Self;
+    /// Half a pixel.
+    const HALF: Self;
+    /// [`FULL`].
+    const FULL: Self;
+    /// `value`, which the caller has kept within range (or never reads when it is not).
+    fn narrow(value: i64) -> Self;
+    fn widen(self) -> i64;
+    /// The low 32 bits.
+    fn low(self) -> i32;
+}
+
+macro_rules! coord {
+    ($($t:ty),+) => {$(
+        impl Coord for $t {
+            const ZERO: Self = 0;
+            const PIXEL: Self = 1 << FRAC;
+            const PIXEL_LESS_ONE: Self = (1 << FRAC) - 1;
+            const HALF: Self = 1 << (FRAC - 1);
+            const FULL: Self = 1 << (2 * FRAC);
+            #[inline(always)]
+            fn narrow(value: i64) -> Self {
+                value as $t
+            }
+            #[inline(always)]
+            fn widen(self) -> i64 {
+                self.into()
+            }
+            #[inline(always)]
+            fn low(self) -> i32 {
+                self as i32
+            }
+        }
+    )+};
+}
+
+coord!(i32, i64);
 
 /// A position, in units of 1/4096 pixel, shifted by half a pixel.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
-struct Position {
-    x: i64,
-    y: i64,
+struct Position<P> {
+    x: P,
+    y: P,
 }
 
 /// One edge of a boundary, from its upper end `a` to its lower end `b`, with where it crosses
 /// the current row boundary.
 #[derive(Copy, Clone, Debug)]
-struct Edge {
-    a: Position,
-    b: Position,
+struct Edge<P> {
+    a: Position<P>,
+    b: Position<P>,
     /// `b.y - a.y`, positive.
-    dy: i64,
+    dy: P,
     /// Rows the crossing state has reached: the boundary `y` (a multiple of `ONE`) where the
     /// edge is at `x + remainder / dy`.
-    y: i64,
-    x: i64,
-    remainder: i64,
-    /// Per row: `ONE * dx = step * dy + step_remainder`.
-    step: i64,
-    step_remainder: i64,
+    y: P,
+    x: P,
+    remainder: P,
+    /// Per row: `ONE * dx = step * dy + step_remainder`. Stepped only across boundaries inside
+    /// the edge, so at least a row apart: then `|step| <= |dx| + 1`, which fits `P`; an edge
+    /// within one row may keep a wrapped step it never adds.
+    step: P,
+    step_remainder: P,
     /// Rows (1/4096 units) the edge takes per 1/4096 pixel across, times 2^32 (`u64::MAX` for
     /// vertical edges, which never cross a column inside a row).
     rows_per_column: u64,
 }
 
-impl Edge {
+impl<P: Coord> Edge<P> {
+    /// A placeholder for chains of fewer edges than [`MAX_EDGES`]: never read (a chain reads
+    /// its first `count` edges only). All zeros, so that an empty chain is cleared, not copied.
+    const UNUSED: Self = Edge {
+        a: Position {
+            x: P::ZERO,
+            y: P::ZERO,
+        },
+        b: Position {
+            x: P::ZERO,
+            y: P::ZERO,
+        },
+        dy: P::ZERO,
+        y: P::ZERO,
+        x: P::ZERO,
+        remainder: P::ZERO,
+        step: P::ZERO,
+        step_remainder: P::ZERO,
+        rows_per_column: 0,
+    };
+
     /// Makes this the edge from `a` to `b`, from the first row boundary at or below `a` and at
     /// or below row `first_row`.
     #[inline(always)]
-    fn start(&mut self, a: Position, b: Position, first_row: i64) {
+    fn start(&mut self, a: Position<P>, b: Position<P>, first_row: i64) {
+        let (a_wide, b_wide) = (
+            Position {
+                x: a.x.widen(),
+                y: a.y.widen(),
+            },
+            Position {
+                x: b.x.widen(),
+                y: b.y.widen(),
+            },
+        );
+        let (a, b) = (a_wide, b_wide);
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         // The first row boundary at or below `a` and at or below the first row drawn.
         let y = ((a.y + ONE - 1) >> FRAC) << FRAC;
@@ -103,27 +209,31 @@ impl Edge {
             let rows = (u128::from(dy as u64) << 32) / u128::from(dx.unsigned_abs());
             u64::try_from(rows).unwrap_or(u64::MAX)
         };
-        self.a = a;
-        self.b = b;
-        self.dy = dy;
-        self.y = y;
-        self.x = x;
-        self.remainder = remainder;
-        self.step = step;
-        self.step_remainder = step_remainder;
+        let narrow = |p: Position<i64>| Position {
+            x: P::narrow(p.x),
+            y: P::narrow(p.y),
+        };
+        self.a = narrow(a);
+        self.b = narrow(b);
+        self.dy = P::narrow(dy);
+        self.y = P::narrow(y);
+        self.x = P::narrow(x);
+        self.remainder = P::narrow(remainder);
+        self.step = P::narrow(step);
+        self.step_remainder = P::narrow(step_remainder);
         self.rows_per_column = rows_per_column;
     }
 
     /// Where the edge crosses row boundary `y` (to 1/4096 pixel, rounded down), for `y` at or
     /// after the last boundary asked for.
-    fn x_at(&mut self, y: i64) -> i64 {
+    fn x_at(&mut self, y: P) -> P {
         while self.y < y {
-            self.y += ONE;
+            self.y += P::PIXEL;
             self.x += self.step;
             self.remainder += self.step_remainder;
             if self.remainder >= self.dy {
-                self.remainder -= self.dy;
-                self.x += 1;
+                self.remainder = self.remainder - self.dy;
+                self.x += P::narrow(1);
             }
         }
         self.x
@@ -160,28 +270,28 @@ fn start_crossing(down: i64, dx: i64, dy: i64) -> (i64, i64) {
 /// The part of a boundary edge inside one row: rows `top..bottom` (1/4096 units), crossing
 /// columns `left..=right` (1/4096 units).
 #[derive(Copy, Clone, Debug, Default)]
-struct Piece {
-    rows: i64,
-    left: i64,
-    right: i64,
+struct Piece<P> {
+    rows: P,
+    left: P,
+    right: P,
     rows_per_column: u64,
 }
 
-impl Piece {
+impl<P: Coord> Piece<P> {
     /// Rows (1/4096 units) where the piece lies left of `x`, for `x` in `left..=right`:
     /// 32-bit arithmetic within a column's width of either end (the columns anti-aliasing
     /// solves, on Cortex-M0 a 64-bit multiply is a library call), 64-bit beyond.
     #[inline(always)]
-    fn rows_left_of(&self, x: i64) -> i64 {
+    fn rows_left_of(&self, x: P) -> P {
         let (from_left, from_right) = (x - self.left, self.right - x);
-        let rows = self.rows as u32; // At most ONE.
-        if from_left <= ONE || from_right <= ONE {
+        let rows = self.rows.low() as u32; // At most ONE.
+        if from_left <= P::PIXEL || from_right <= P::PIXEL {
             // Integer and 16 fraction bits of rows per 1/4096 pixel; more than a row per
             // unit saturates, as the result does.
             let per_x = (self.rows_per_column >> 32).min(u64::from(rows)) as u32;
             let fraction = (self.rows_per_column as u32) >> 16;
-            let rows_over = |across: i64| {
-                let across = across as u32;
+            let rows_over = |across: P| {
+                let across = across.low() as u32;
                 (across * per_x + ((across * fraction) >> 16)).min(rows)
             };
             let left_of = if from_left <= from_right {
@@ -189,29 +299,30 @@ impl Piece {
             } else {
                 rows - rows_over(from_right)
             };
-            return i64::from(left_of);
+            return P::narrow(i64::from(left_of));
         }
-        let across = from_left as u64;
-        ((across.saturating_mul(self.rows_per_column) >> 32) as i64).min(self.rows)
+        let across = from_left.widen() as u64;
+        let rows = (across.saturating_mul(self.rows_per_column) >> 32) as i64;
+        P::narrow(rows.min(self.rows.widen()))
     }
 
     /// The area of column `column`'s square (in 1/4096 pixels from 0) left of this piece, in
     /// units of [`FULL`] per pixel: the integral over the piece's rows of how far the piece
     /// lies into the column, between 0 and 1. Out of line: one copy serves every caller.
     #[inline(never)]
-    fn area_left_of(&self, column: i64) -> i64 {
-        let (x0, x1) = (column, column + ONE);
+    fn area_left_of(&self, column: P) -> P {
+        let (x0, x1) = (column, column + P::PIXEL);
         if self.right <= x0 {
-            return 0;
+            return P::ZERO;
         }
         if self.left >= x1 {
-            return self.rows * ONE;
+            return self.rows << FRAC;
         }
         // Everything below is within the column: 32-bit products.
-        let rows = self.rows as i32;
+        let rows = self.rows.low();
         if self.left == self.right {
             // Vertical, inside the column.
-            return i64::from(rows * (self.left - x0) as i32);
+            return P::narrow(i64::from(rows * (self.left - x0).low()));
         }
         let (enter, leave) = (x0.max(self.left), x1.min(self.right));
         // Where the piece ends inside the column, all its rows are left of its end: the
@@ -219,80 +330,68 @@ impl Piece {
         let before = if enter == self.left {
             0
         } else {
-            self.rows_left_of(enter) as i32
+            self.rows_left_of(enter).low()
         };
         let inside = if leave == self.right {
             rows
         } else {
-            (self.rows_left_of(leave) as i32).max(before)
+            self.rows_left_of(leave).low().max(before)
         };
         // Past the column: the whole width; inside it: the mean depth into it.
-        let depth = (enter + leave - 2 * x0) as i32;
-        i64::from((rows - inside) * ONE as i32 + (inside - before) * depth / 2)
+        let depth = (enter - x0).low() + (leave - x0).low();
+        P::narrow(i64::from(
+            (rows - inside) * ONE as i32 + (inside - before) * depth / 2,
+        ))
     }
 }
 
 /// The boundaries of one row: pieces of the left and the right chain.
 #[derive(Copy, Clone, Debug, Default)]
-struct RowBoundaries {
-    left: [Piece; MAX_EDGES],
-    right: [Piece; MAX_EDGES],
+struct RowBoundaries<P> {
+    left: [Piece<P>; MAX_EDGES],
+    right: [Piece<P>; MAX_EDGES],
     lefts: usize,
     rights: usize,
     /// Rows of the strip inside the triangle (1/4096 units).
-    rows: i64,
+    rows: P,
 }
 
-impl RowBoundaries {
+impl<P: Coord> RowBoundaries<P> {
     /// Coverage of column `column` (in 1/4096 pixels), in units of [`FULL`].
     #[inline]
-    fn coverage(&self, column: i64) -> i64 {
-        let right: i64 = self.right[..self.rights]
+    fn coverage(&self, column: P) -> P {
+        let right: P = self.right[..self.rights]
             .iter()
             .map(|p| p.area_left_of(column))
             .sum();
-        let left: i64 = self.left[..self.lefts]
+        let left: P = self.left[..self.lefts]
             .iter()
             .map(|p| p.area_left_of(column))
             .sum();
-        (right - left).clamp(0, FULL)
+        (right - left).clamp(P::ZERO, P::FULL)
     }
 
     /// Columns (in pixels) the pieces of `pieces` touch: `first..end`.
-    fn columns(pieces: &[Piece]) -> (i64, i64) {
-        let left = pieces.iter().map(|p| p.left).min().unwrap_or(0);
-        let right = pieces.iter().map(|p| p.right).max().unwrap_or(0);
-        (left >> FRAC, (right + ONE - 1) >> FRAC)
+    fn columns(pieces: &[Piece<P>]) -> (P, P) {
+        let left = pieces.iter().map(|p| p.left).min().unwrap_or(P::ZERO);
+        let right = pieces.iter().map(|p| p.right).max().unwrap_or(P::ZERO);
+        (left >> FRAC, (right + P::PIXEL_LESS_ONE) >> FRAC)
     }
 }
 
-/// A placeholder for chains of fewer edges than [`MAX_EDGES`]: never read (a chain reads its
-/// first `count` edges only). All zeros, so that an empty chain is cleared, not copied.
-const UNUSED_EDGE: Edge = Edge {
-    a: Position { x: 0, y: 0 },
-    b: Position { x: 0, y: 0 },
-    dy: 0,
-    y: 0,
-    x: 0,
-    remainder: 0,
-    step: 0,
-    step_remainder: 0,
-    rows_per_column: 0,
-};
-
 /// A chain of edges from the top vertex to the bottom one, on one side.
 #[derive(Copy, Clone, Debug)]
-struct Chain {
-    edges: [Edge; MAX_EDGES],
+struct Chain<P> {
+    edges: [Edge<P>; MAX_EDGES],
     count: usize,
     /// First edge not yet finished above the current row.
     next: usize,
 }
 
-impl Chain {
+impl<P: Coord> Chain<P> {
     /// No edges.
     const EMPTY: Self = Self {
-        edges: [UNUSED_EDGE; MAX_EDGES],
+        edges: [Edge::UNUSED; MAX_EDGES],
         count: 0,
         next: 0,
     };
@@ -301,7 +400,7 @@ impl Chain {
     /// In place, each edge written where it is kept: built and returned, the chain and its
     /// edges (88 bytes each) went through three `memcpy` calls, about 700 instructions per
     /// small triangle on Cortex-M0.
-    fn start(&mut self, vertices: &[Position], first_row: i64) {
+    fn start(&mut self, vertices: &[Position<P>], first_row: i64) {
         self.count = 0;
         self.next = 0;
         for pair in vertices.windows(2) {
@@ -317,8 +416,8 @@ impl Chain {
 
     /// The pieces of this chain inside the strip `top..top + ONE`.
     #[inline]
-    fn pieces(&mut self, top: i64, out: &mut [Piece; MAX_EDGES]) -> usize {
-        let bottom = top + ONE;
+    fn pieces(&mut self, top: P, out: &mut [Piece<P>; MAX_EDGES]) -> usize {
+        let bottom = top + P::PIXEL;
         while self.next < self.count && self.edges[self.next].b.y <= top {
             self.next += 1;
         }
@@ -353,8 +452,8 @@ impl Chain {
 
 /// Coverage (units of [`FULL`], 0 to `FULL`) as an opacity, 0 to 255, rounded.
 #[inline(always)]
-fn opacity(coverage: i64) -> u8 {
-    opacity32(coverage as i32)
+fn opacity<P: Coord>(coverage: P) -> u8 {
+    opacity32(coverage.low())
 }
 
 /// [`opacity`] of a coverage already in `i32` (0 to `FULL`, which fits).
@@ -370,63 +469,70 @@ fn opacity32(coverage: i32) -> u8 {
 /// (`left_side`) or left of it, of a strip `rows` high. Columns the piece crosses whole, all
 /// but its first and last, take equal steps of rows: their coverage is stepped, not solved.
 #[inline]
-fn lone_piece_columns<K: CoverageSink>(
-    piece: &Piece,
+fn lone_piece_columns<P: Coord, K: CoverageSink>(
+    piece: &Piece<P>,
     left_side: bool,
-    rows: i64,
-    clip: (i64, i64),
+    rows: P,
+    clip: (P, P),
     run: &mut EdgeRun,
     sink: &mut K,
 ) -> Result<(), K::Error> {
     // Shifts, not `div_euclid` (whose remainder costs a 64-bit multiply on Cortex-M0).
     let first = piece.left >> FRAC;
-    let end = (piece.right + ONE - 1) >> FRAC;
-    let put = |run: &mut EdgeRun, sink: &mut K, column: i64, area_left: i64| {
+    let end = (piece.right + P::PIXEL_LESS_ONE) >> FRAC;
+    // Everything below is within a column or two of the piece: 32-bit arithmetic.
+    let strip = (rows << FRAC).low();
+    let put = |run: &mut EdgeRun, sink: &mut K, column: P, area_left: i32| {
         let coverage = if left_side {
-            rows * ONE - area_left
+            strip - area_left
         } else {
             area_left
         };
         if column >= clip.0 && column < clip.1 {
             // Inside the clip, whose columns are i32.
-            run.push(column as i32, opacity(coverage.clamp(0, FULL)), sink)
+            run.push(
+                column.low(),
+                opacity32(coverage.clamp(0, FULL as i32)),
+                sink,
+            )
         } else {
             Ok(())
         }
     };
-    // The first and the last column, in 32-bit arithmetic: within a column of the piece's
-    // ends (`Piece::area_left_of` without its general cases).
-    let rows32 = piece.rows as i32;
-    let first_x = first * ONE;
+    // The first and the last column: within a column of the piece's ends
+    // (`Piece::area_left_of` without its general cases).
+    let rows32 = piece.rows.low();
+    let first_x = first << FRAC;
     if end <= first {
         // Vertical, on a column boundary: it crosses no column.
         return Ok(());
     }
-    if end - first == 1 {
+    let one = P::narrow(1);
+    if end - first == one {
         // Inside one column: a trapezoid the piece's height, its mean depth into the column.
-        let depth = (piece.left + piece.right - 2 * first_x) as i32;
-        return put(run, sink, first, i64::from(rows32 * depth / 2));
+        let depth = (piece.left - first_x).low() + (piece.right - first_x).low();
+        return put(run, sink, first, rows32 * depth / 2);
     }
-    let leave = first_x + ONE;
-    let inside = piece.rows_left_of(leave) as i32;
-    let depth = (piece.left + leave - 2 * first_x) as i32;
+    let leave = first_x + P::PIXEL;
+    let inside = piece.rows_left_of(leave).low();
+    let depth = (piece.left - first_x).low() + ONE as i32;
     put(
         run,
         sink,
         first,
-        i64::from((rows32 - inside) * ONE as i32 + inside * depth / 2),
+        (rows32 - inside) * ONE as i32 + inside * depth / 2,
     )?;
-    let last_x = (end - 1) * ONE;
+    let last_x = (end - one) << FRAC;
     let last = || {
-        let before = piece.rows_left_of(last_x) as i32;
-        i64::from((rows32 - before) * (piece.right - last_x) as i32 / 2)
+        let before = piece.rows_left_of(last_x).low();
+        (rows32 - before) * (piece.right - last_x).low() / 2
     };
-    if end - first == 2 {
-        return put(run, sink, end - 1, last());
+    if end - first == P::narrow(2) {
+        return put(run, sink, end - one, last());
     }
     // Middle columns: rows left of the column's left side, in 2^-32 units, step by a column's
     // worth each time.
-    let (from, to) = ((first + 1).max(clip.0), (end - 1).min(clip.1));
+    let (from, to) = ((first + one).max(clip.0), (end - one).min(clip.1));
     if from < to {
         let per_x = piece.rows_per_column;
         // A shift, not a multiply (a library call on Cortex-M0).
@@ -435,7 +541,7 @@ fn lone_piece_columns<K: CoverageSink>(
         } else {
             u64::MAX
         };
-        let across = (from * ONE - piece.left) as u64;
+        let across = ((from << FRAC) - piece.left).widen() as u64;
         let mut rows_before = if across < 1 << 16 && per_x < 1 << 32 {
             // 16 by 32 bits: two 32-bit products of 16-bit halves.
             let (a, high, low) = (across as u32, (per_x >> 16) as u32, (per_x & 0xFFFF) as u32);
@@ -445,9 +551,9 @@ fn lone_piece_columns<K: CoverageSink>(
         };
         // In 32 bits (64-bit arithmetic is two instructions a step on 32-bit cores): rows are
         // at most ONE, areas at most FULL, and the columns lie inside the clip.
-        let (piece_rows, strip) = (piece.rows as u32, (rows * ONE) as i32);
+        let piece_rows = piece.rows.low() as u32;
         let whole = piece_rows as i32 * ONE as i32;
-        for column in from as i32..to as i32 {
+        for column in from.low()..to.low() {
             let rows_after = rows_before.saturating_add(per_column);
             let before = ((rows_before >> 32) as u32).min(piece_rows);
             let inside = ((rows_after >> 32) as u32).min(piece_rows);
@@ -461,21 +567,22 @@ fn lone_piece_columns<K: CoverageSink>(
             rows_before = rows_after;
         }
     }
-    put(run, sink, end - 1, last())
+    put(run, sink, end - one, last())
 }
 
 /// Emits the columns `from..to` of the row within `clip` (columns `clip.0..clip.1`), each
 /// solved from every piece.
-fn boundary_columns<K: CoverageSink>(
-    bounds: &RowBoundaries,
-    (from, to): (i64, i64),
-    clip: (i64, i64),
+fn boundary_columns<P: Coord, K: CoverageSink>(
+    bounds: &RowBoundaries<P>,
+    (from, to): (P, P),
+    clip: (P, P),
     run: &mut EdgeRun,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    for column in from.max(clip.0)..to.min(clip.1) {
-        // Inside the clip, whose columns are i32.
-        run.push(column as i32, opacity(bounds.coverage(column * ONE)), sink)?;
+    // Inside the clip, whose columns are i32.
+    for column in from.max(clip.0).low()..to.min(clip.1).low() {
+        let x = P::narrow(i64::from(column)) << FRAC;
+        run.push(column, opacity(bounds.coverage(x)), sink)?;
     }
     Ok(())
 }
@@ -497,18 +604,23 @@ const RUN: usize = 32;
 
 /// Gathers a row's consecutive edge pixels, so that each run reaches the sink in one call.
 struct EdgeRun {
-    /// The first pixel's column (inside the clip, whose columns are i32).
+    /// The first pixel's column, from the walk's origin (inside the clip, whose columns are
+    /// i32).
     x: i32,
+    /// The origin's column: added when the run goes out.
+    origin: i32,
+    /// The row, on the target.
     y: i32,
     len: usize,
     coverages: [u8; RUN],
 }
 
 impl EdgeRun {
-    fn new(y: i32) -> Self {
+    fn new(origin: i32) -> Self {
         Self {
             x: 0,
-            y,
+            origin,
+            y: 0,
             len: 0,
             coverages: [0; RUN],
         }
@@ -542,7 +654,11 @@ impl EdgeRun {
     fn flush<K: CoverageSink>(&mut self, sink: &mut K) -> Result<(), K::Error> {
         if self.len > 0 {
             let len = core::mem::replace(&mut self.len, 0);
-            sink.edge(self.x, self.y, &self.coverages[..len])?;
+            sink.edge(
+                self.x.wrapping_add(self.origin),
+                self.y,
+                &self.coverages[..len],
+            )?;
         }
         Ok(())
     }
@@ -581,7 +697,8 @@ pub(crate) fn walk_subpixel_coverage<K: CoverageSink>(
     walk_coverage_of(vertices, triangle.orientation(), clip, sink)
 }
 
-/// [`walk_coverage`] for vertices in 1/4096 pixel (pixel centres at whole pixels).
+/// [`walk_coverage`] for vertices in 1/4096 pixel (pixel centres at whole pixels): in `i32`
+/// from the clip's corner when the vertices lie within [`NARROW_REACH`] of it, else in `i64`.
 fn walk_coverage_of<K: CoverageSink>(
     vertices: [(i64, i64); 3],
     orientation: crate::Orientation,
@@ -599,13 +716,59 @@ fn walk_coverage_of<K: CoverageSink>(
     if column_start >= column_end || row_start >= row_end {
         return Ok(());
     }
+    let clockwise = orientation == crate::Orientation::Clockwise;
+    let near = vertices.map(|(x, y)| (x - column_start * ONE, y - row_start * ONE));
+    if near.iter().all(|&(x, y)| {
+        x.unsigned_abs() < NARROW_REACH as u64 && y.unsigned_abs() < NARROW_REACH as u64
+    }) {
+        // Columns and rows from the corner; beyond NARROW_CLIP none is covered.
+        let columns = (column_end - column_start).min(NARROW_CLIP);
+        let rows = (row_end - row_start).min(NARROW_CLIP);
+        let vertices = near.map(|(x, y)| (x as i32, y as i32));
+        // Within the clip: i32.
+        let origin = (column_start as i32, row_start as i32);
+        walk_chains(
+            vertices,
+            clockwise,
+            (0, columns as i32),
+            (0, rows as i32),
+            origin,
+            sink,
+        )
+    } else {
+        let columns = (column_start, column_end);
+        walk_chains(
+            vertices,
+            clockwise,
+            columns,
+            (row_start, row_end),
+            (0, 0),
+            sink,
+        )
+    }
+}
+
+/// Walks the rows of the triangle with `vertices` (1/4096 pixel, from `origin`), within the
+/// clip's `columns` and `rows` (pixels from `origin`), handing `sink` each row's coverage at
+/// `origin` plus the column and row.
+fn walk_chains<P: Coord, K: CoverageSink>(
+    vertices: [(P, P); 3],
+    clockwise: bool,
+    (column_start, column_end): (P, P),
+    (row_start, row_end): (P, P),
+    origin: (i32, i32),
+    sink: &mut K,
+) -> Result<(), K::Error> {
     // Positions are shifted by half a pixel (pixel squares from whole units): up to 2^39 in
-    // magnitude, which each edge's set-up handles.
-    let mut polygon = [Position { x: 0, y: 0 }; MAX_VERTICES];
+    // magnitude in `i64`, which each edge's set-up handles.
+    let mut polygon = [Position {
+        x: P::ZERO,
+        y: P::ZERO,
+    }; MAX_VERTICES];
     for (position, (x, y)) in polygon.iter_mut().zip(vertices) {
         *position = Position {
-            x: x + ONE / 2,
-            y: y + ONE / 2,
+            x: x + P::HALF,
+            y: y + P::HALF,
         };
     }
     let len = 3;
@@ -617,7 +780,7 @@ fn walk_coverage_of<K: CoverageSink>(
     let bottom = (0..len)
         .max_by_key(|&i| (polygon[i].y, polygon[i].x))
         .unwrap_or(0);
-    let walk = |forward: bool, out: &mut [Position; MAX_VERTICES]| {
+    let walk = |forward: bool, out: &mut [Position<P>; MAX_VERTICES]| {
         let mut count = 0;
         let mut i = top;
         loop {
@@ -634,38 +797,41 @@ fn walk_coverage_of<K: CoverageSink>(
         }
         count
     };
-    let (mut forward, mut backward) = (
-        [Position { x: 0, y: 0 }; MAX_VERTICES],
-        [Position { x: 0, y: 0 }; MAX_VERTICES],
-    );
+    let unset = Position {
+        x: P::ZERO,
+        y: P::ZERO,
+    };
+    let (mut forward, mut backward) = ([unset; MAX_VERTICES], [unset; MAX_VERTICES]);
     let (forwards, backwards) = (walk(true, &mut forward), walk(false, &mut backward));
     // Going forward from the top vertex leads down the right side when the triangle is
     // clockwise on screen (y down).
-    let clockwise = orientation == crate::Orientation::Clockwise;
     let (right, left) = if clockwise {
         (&forward[..forwards], &backward[..backwards])
     } else {
         (&backward[..backwards], &forward[..forwards])
     };
     let first_row = (polygon[top].y >> FRAC).max(row_start);
-    let last_row = ((polygon[bottom].y + ONE - 1) >> FRAC).min(row_end);
+    let last_row = ((polygon[bottom].y + P::PIXEL_LESS_ONE) >> FRAC).min(row_end);
+    if first_row >= last_row {
+        return Ok(());
+    }
     let (mut left_chain, mut right_chain) = (Chain::EMPTY, Chain::EMPTY);
-    left_chain.start(left, first_row);
-    right_chain.start(right, first_row);
+    left_chain.start(left, first_row.widen());
+    right_chain.start(right, first_row.widen());
     let (left, right) = (&mut left_chain, &mut right_chain);
     // Reused from row to row: each row overwrites what it reads.
     let mut bounds = RowBoundaries::default();
-    let mut run = EdgeRun::new(0);
-    for row in first_row..last_row {
-        let strip = row * ONE;
+    let mut run = EdgeRun::new(origin.0);
+    // Rows within the clip: i32.
+    for row in first_row.low()..last_row.low() {
+        let strip = P::narrow(i64::from(row)) << FRAC;
         bounds.lefts = left.pieces(strip, &mut bounds.left);
         bounds.rights = right.pieces(strip, &mut bounds.right);
         bounds.rows = bounds.left[..bounds.lefts].iter().map(|p| p.rows).sum();
-        if bounds.lefts == 0 || bounds.rights == 0 || bounds.rows == 0 {
+        if bounds.lefts == 0 || bounds.rights == 0 || bounds.rows == P::ZERO {
             continue;
         }
-        // Within the clip, whose rows are i32.
-        run.y = row as i32;
+        run.y = row.wrapping_add(origin.1);
         row_coverage(&bounds, (column_start, column_end), &mut run, sink)?;
     }
     Ok(())
@@ -674,9 +840,9 @@ fn walk_coverage_of<K: CoverageSink>(
 /// Hands `sink` one row's coverage within columns `clip.0..clip.1`: the left edge's columns,
 /// the interior, the right edge's columns.
 #[inline]
-fn row_coverage<K: CoverageSink>(
-    bounds: &RowBoundaries,
-    clip: (i64, i64),
+fn row_coverage<P: Coord, K: CoverageSink>(
+    bounds: &RowBoundaries<P>,
+    clip: (P, P),
     run: &mut EdgeRun,
     sink: &mut K,
 ) -> Result<(), K::Error> {
@@ -697,12 +863,12 @@ fn row_coverage<K: CoverageSink>(
     run.flush(sink)?;
     let (from, to) = (left_end.max(clip.0), right_start.min(clip.1));
     if from < to {
-        let alpha = opacity(bounds.rows * ONE);
+        let alpha = opacity(bounds.rows << FRAC);
         if alpha > 0 {
             let span = Span {
-                x: from as i32,
+                x: from.low().wrapping_add(run.origin),
                 y: run.y,
-                len: (to - from) as u32,
+                len: (to - from).low() as u32,
             };
             sink.interior(span, alpha)?;
         }
