@@ -70,6 +70,18 @@ pub(crate) trait Lane:
     fn in_half_open(value: Self, limit: Self) -> bool;
 }
 
+/// Whether `a`, `b`, `c` and `d` all lie in `-2^15..2^15` (the deltas of every screen-sized
+/// triangle), so that `a * b - c * d` fits 32 bits: products up to 2^30, their difference
+/// below 2^31. On Cortex-M0 a 64-bit multiply is a library call of about forty instructions;
+/// this test is a few.
+#[inline(always)]
+fn within_15_bits(a: i32, b: i32, c: i32, d: i32) -> bool {
+    const HALF: i32 = 1 << 15;
+    let biased =
+        a.wrapping_add(HALF) | b.wrapping_add(HALF) | c.wrapping_add(HALF) | d.wrapping_add(HALF);
+    (biased as u32) < 1 << 16
+}
+
 /// Floor division by a positive divisor: one truncating division and a fix-up (what
 /// `div_euclid` and `rem_euclid` compile to, minus their handling of negative divisors).
 macro_rules! floor_div_rem {
@@ -116,6 +128,9 @@ impl Lane for i32 {
 
     #[inline]
     fn cross_sign(a: Self, b: Self, c: Self, d: Self) -> Ordering {
+        if within_15_bits(a, b, c, d) {
+            return (a * b - c * d).cmp(&0);
+        }
         // Fast-path deltas are below 2^31 in magnitude: each product below 2^62 and their
         // difference below 2^63.
         (i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d)).cmp(&0)
@@ -123,15 +138,7 @@ impl Lane for i32 {
 
     #[inline(always)]
     fn cross_positive(a: Self, b: Self, c: Self, d: Self) -> Option<bool> {
-        // Deltas in -2^15..2^15 (every screen-sized triangle): products up to 2^30, their
-        // difference below 2^31, so 32 bits do. On Cortex-M0 a 64-bit multiply is a library
-        // call, two per triangle; the range test is a few instructions.
-        const HALF: i32 = 1 << 15;
-        let biased = a.wrapping_add(HALF)
-            | b.wrapping_add(HALF)
-            | c.wrapping_add(HALF)
-            | d.wrapping_add(HALF);
-        if (biased as u32) < 1 << 16 {
+        if within_15_bits(a, b, c, d) {
             let cross = a * b - c * d;
             return (cross != 0).then_some(cross > 0);
         }
@@ -494,12 +501,21 @@ mod tests {
             (3, 5, 15, 1),
             (-7, 9, 2, -31),
             (i32::MAX / 2, 3, 1, 1),
+            // Just past the 32-bit products' range.
+            (h, h + 1, -h - 1, h),
+            (3 * h - 1, 3 * h - 1, 1, 1),
+            (-2 * h, 2 * h, 2 * h, 2 * h - 1),
         ];
         for (a, b, c, d) in cases {
             let exact = i64::from(a) * i64::from(b) - i64::from(c) * i64::from(d);
             assert_eq!(
                 <i32 as Lane>::cross_positive(a, b, c, d),
                 (exact != 0).then_some(exact > 0),
+                "{a} {b} {c} {d}"
+            );
+            assert_eq!(
+                <i32 as Lane>::cross_sign(a, b, c, d),
+                exact.cmp(&0),
                 "{a} {b} {c} {d}"
             );
         }
