@@ -166,17 +166,12 @@ impl<P: Coord> Edge<P> {
     /// or below row `first_row`.
     #[inline(always)]
     fn start(&mut self, a: Position<P>, b: Position<P>, first_row: i64) {
-        let (a_wide, b_wide) = (
-            Position {
-                x: a.x.widen(),
-                y: a.y.widen(),
-            },
-            Position {
-                x: b.x.widen(),
-                y: b.y.widen(),
-            },
-        );
-        let (a, b) = (a_wide, b_wide);
+        // Set up in i64, whatever `P` keeps: products of deltas and a pixel overflow i32.
+        let widen = |p: Position<P>| Position {
+            x: p.x.widen(),
+            y: p.y.widen(),
+        };
+        let (a, b) = (widen(a), widen(b));
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         // The first row boundary at or below `a` and at or below the first row drawn.
         let y = ((a.y + ONE - 1) >> FRAC) << FRAC;
