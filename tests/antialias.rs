@@ -56,20 +56,20 @@ impl Q {
 
 /// The exact area of pixel `p`'s square (side 1, centred on `p`) inside triangle `v`.
 fn exact_coverage(v: [Point; 3], p: Point) -> f64 {
+    exact_coverage_in(v.map(|q| (i64::from(q.x), i64::from(q.y))), 1, p)
+}
+
+/// [`exact_coverage`] for vertices in units of `1 / scale` pixel.
+fn exact_coverage_in(v: [(i64, i64); 3], scale: i64, p: Point) -> f64 {
     // Doubled coordinates from the pixel's centre (areas do not change when moved): vertices
     // and the square's sides are small integers, so the rationals stay within i128 for
-    // vertices millions of pixels out. Areas are 4x.
+    // vertices millions of pixels out. Areas are (2 scale)^2 times the pixels'.
+    let (cx, cy) = (scale * i64::from(p.x), scale * i64::from(p.y));
     let mut polygon: Vec<(Q, Q)> = v
         .iter()
-        .map(|q| {
-            let (x, y) = (
-                i64::from(q.x) - i64::from(p.x),
-                i64::from(q.y) - i64::from(p.y),
-            );
-            (Q::int(2 * x), Q::int(2 * y))
-        })
+        .map(|&(x, y)| (Q::int(2 * (x - cx)), Q::int(2 * (y - cy))))
         .collect();
-    let (x0, x1, y0, y1) = (-1, 1, -1, 1);
+    let (x0, x1, y0, y1) = (-scale, scale, -scale, scale);
     // Keep the side where (coordinate - bound) * sign >= 0.
     for (on_x, bound, sign) in [
         (true, x0, 1),
@@ -111,8 +111,8 @@ fn exact_coverage(v: [Point; 3], p: Point) -> f64 {
         let (a, b) = (polygon[i], polygon[(i + 1) % polygon.len()]);
         twice_area = twice_area.add(a.0.mul(b.1).sub(b.0.mul(a.1)));
     }
-    // Twice the area in doubled coordinates: 8x the area in pixels.
-    (twice_area.to_f64() / 8.0).abs()
+    // Twice the area in doubled coordinates: 8 scale^2 times the area in pixels.
+    (twice_area.to_f64() / (8 * scale * scale) as f64).abs()
 }
 
 /// Coverage (0 to 255) of every pixel of `clip`, row-major, checking that each is emitted at
@@ -288,6 +288,50 @@ fn any_vertices_are_safe() {
     for v in huge {
         check_against_exact(v, clip());
         assert!(coverages(v, clip()).contains(&255));
+    }
+}
+
+/// Sub-pixel triangles (vertices in 1/256 pixel) around the clip: small, slivers, large
+/// (hundreds of pixels out: the rational reference overflows i128 much beyond), on whole
+/// pixels or not. The walk's 64-bit case is the integer triangles' (far vertices, above); a
+/// sub-pixel triangle on whole pixels draws what the integer one does (`tests/subpixel.rs`).
+fn subpixel_triangle() -> impl Strategy<Value = [(i32, i32); 3]> {
+    let near = || (-6 * 256..=30 * 256, -6 * 256..=30 * 256);
+    let far = || (-200_000..=200_000, -200_000..=200_000);
+    prop_oneof![
+        4 => [near(), near(), near()],
+        3 => (near(), (-800..=800, -800..=800), (-800..=800, -800..=800))
+            .prop_map(|(a, d, e)| [a, (a.0 + d.0, a.1 + d.1), (a.0 + e.0, a.1 + e.1)]),
+        2 => [far(), near(), far()],
+        1 => [near(), near(), near()].prop_map(|v| v.map(|(x, y)| (x & !255, y & !255))),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1000))]
+
+    /// Anti-aliased sub-pixel triangles: white over black in `Gray8` is the coverage itself,
+    /// which is the exact area of each pixel's square within the bound.
+    #[test]
+    fn subpixel_coverage_is_the_exact_area_within_the_bound(v in subpixel_triangle()) {
+        use embedded_graphics::pixelcolor::{Gray8, GrayColor};
+        use fixed::types::I24F8;
+        use trirast::{geometry::{SubPixelTriangle, SubPoint}, target::BlendTarget, FlatStyle};
+        let point = |(x, y): (i32, i32)| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y));
+        let t = SubPixelTriangle::new(point(v[0]), point(v[1]), point(v[2]));
+        let got = frame_after(0, |frame| {
+            frame.draw_anti_aliased(&t, &FlatStyle::new(Gray8::WHITE)).unwrap();
+        });
+        let units = v.map(|(x, y)| (i64::from(x), i64::from(y)));
+        for (i, &luma) in got.iter().enumerate() {
+            let p = Point::new(i as i32 % 24, i as i32 / 24);
+            let exact = exact_coverage_in(units, 256, p);
+            prop_assert!((f64::from(luma) / 255.0 - exact).abs() <= BOUND,
+                "{v:?} at {p:?}: {luma}/255, exact {exact:.5}");
+            if exact == 1.0 {
+                prop_assert_eq!(luma, 255);
+            }
+        }
     }
 }
 

@@ -191,13 +191,11 @@ impl<P: Coord> Edge<P> {
         let rows_per_column = if dx == 0 {
             u64::MAX
         } else if whole_pixels && across < 1 << 16 && down < 1 << 16 {
-            // Vertices at pixel centres, under 2^16 pixels apart: the ratio in whole pixels,
-            // by two 16-bit digits of 32-bit division (a 64-bit one is a library call on
-            // every Cortex-M).
-            let (dx, dy) = (across as u32, down as u32);
-            let high = (dy << 16) / dx;
-            let low = (((dy << 16) % dx) << 16) / dx;
-            (u64::from(high) << 16) | u64::from(low)
+            // Vertices at pixel centres, under 2^16 pixels apart: the ratio in whole pixels.
+            ratio_by_digits(down as u32, across as u32)
+        } else if dx.unsigned_abs() < 1 << 16 && dy < 1 << 16 {
+            // Under 16 pixels each way: the ratio in 1/4096 units.
+            ratio_by_digits(dy as u32, dx.unsigned_abs() as u32)
         } else if dy < 1 << 32 {
             ((dy as u64) << 32) / dx.unsigned_abs()
         } else {
@@ -235,6 +233,15 @@ impl<P: Coord> Edge<P> {
     }
 }
 
+/// `(rows << 32) / across` for both under 2^16 and `across > 0`, by two 16-bit digits of
+/// 32-bit division: a 64-bit division is a library call on every Cortex-M.
+#[inline(always)]
+fn ratio_by_digits(rows: u32, across: u32) -> u64 {
+    let high = (rows << 16) / across;
+    let low = (((rows << 16) % across) << 16) / across;
+    (u64::from(high) << 16) | u64::from(low)
+}
+
 /// `n / d` rounded down, and the remainder (`0..d`), for `d > 0`: one division, in 32 bits
 /// when both fit (on Cortex-M0 every division is a library call, a 64-bit one several).
 #[inline]
@@ -251,6 +258,12 @@ fn floor_div(n: i64, d: i64) -> (i64, i64) {
 /// `down * dx / dy` as quotient (rounded down) and remainder, for `down >= 0`, `dy > 0`: in
 /// 64 bits when the product fits, as it does for vertices within 2^19 pixels of each other.
 fn start_crossing(down: i64, dx: i64, dy: i64) -> (i64, i64) {
+    if down < ONE && dx.unsigned_abs() < 1 << 19 {
+        // The usual start, within a row of the vertex, of an edge under 128 pixels across:
+        // the product below 2^31, a 32-bit multiply (a 64-bit one is a library call on
+        // Cortex-M0).
+        return floor_div(i64::from(down as i32 * dx as i32), dy);
+    }
     if let Some(numerator) = down.checked_mul(dx) {
         floor_div(numerator, dy)
     } else {

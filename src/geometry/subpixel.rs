@@ -206,10 +206,27 @@ impl SubPixelTriangle {
     /// ```
     #[must_use]
     pub fn orientation(&self) -> Orientation {
-        match self.doubled_signed_area().signum() {
-            1 => Orientation::Clockwise,
-            -1 => Orientation::CounterClockwise,
-            _ => Orientation::Degenerate,
+        use crate::setup::Lane;
+        // The sign of the doubled area, in 32-bit products for deltas within 2^15 units (128
+        // pixels), 64-bit ones within 2^31, 128-bit beyond: on Cortex-M0 each 64-bit
+        // product is a library call, and the 128-bit area took twelve.
+        let [first, second, third] = self
+            .vertices
+            .map(|p| (i64::from(p.x.to_bits()), i64::from(p.y.to_bits())));
+        let deltas = [
+            second.0 - first.0,
+            third.1 - first.1,
+            second.1 - first.1,
+            third.0 - first.0,
+        ];
+        let sign = match deltas.map(i32::try_from) {
+            [Ok(a), Ok(b), Ok(c), Ok(d)] => i32::cross_sign(a, b, c, d),
+            _ => i64::cross_sign(deltas[0], deltas[1], deltas[2], deltas[3]),
+        };
+        match sign {
+            core::cmp::Ordering::Greater => Orientation::Clockwise,
+            core::cmp::Ordering::Less => Orientation::CounterClockwise,
+            core::cmp::Ordering::Equal => Orientation::Degenerate,
         }
     }
 
