@@ -62,12 +62,13 @@ pub enum Mode {
     /// Flat with anti-aliased edges (`BlendTarget::draw_anti_aliased`): edge pixels blended by
     /// their exact coverage. Minus `Flat`, what anti-aliasing costs.
     AntiAliased,
-    /// `Flat`, `Gouraud`, `GouraudZ` and `TexNearest` with sub-pixel vertices
+    /// `Flat`, `Gouraud`, `GouraudZ`, `TexNearest` and `AntiAliased` with sub-pixel vertices
     /// (`SubPixelTriangle`): each vertex moved by a fraction of a pixel (see [`subpixel`]).
     FlatSub,
     GouraudSub,
     GouraudZSub,
     TexNearestSub,
+    AntiAliasedSub,
     /// `TexNearest` and `TexBilinear` perspective-correct (`TextureStyle::with_perspective`,
     /// 16-pixel sub-spans), with `w` from 1 at the top of the screen to 4 at the bottom (see
     /// [`receding_w`]). Over the affine modes, what perspective costs.
@@ -77,7 +78,7 @@ pub enum Mode {
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 16] = [
+    pub const ALL: [Mode; 17] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -94,6 +95,7 @@ impl Mode {
         Mode::PerspNearest,
         Mode::PerspBilinear,
         Mode::BandCache,
+        Mode::AntiAliasedSub,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -113,6 +115,7 @@ impl Mode {
             Mode::GouraudSub => "gouraud-sub",
             Mode::GouraudZSub => "gouraud-z-sub",
             Mode::TexNearestSub => "nearest-sub",
+            Mode::AntiAliasedSub => "aa-flat-sub",
             Mode::PerspNearest => "persp-nearest",
             Mode::PerspBilinear => "persp-bilinear",
         }
@@ -122,7 +125,11 @@ impl Mode {
     pub fn subpixel(self) -> bool {
         matches!(
             self,
-            Mode::FlatSub | Mode::GouraudSub | Mode::GouraudZSub | Mode::TexNearestSub
+            Mode::FlatSub
+                | Mode::GouraudSub
+                | Mode::GouraudZSub
+                | Mode::TexNearestSub
+                | Mode::AntiAliasedSub
         )
     }
 }
@@ -130,7 +137,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ`, `Band` and `BandCache` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 64] = [
+pub const EXPECTED: [(Mode, Scene, u32); 68] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -195,6 +202,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 64] = [
     (Mode::PerspBilinear, Scene::Small, 0x60802120),
     (Mode::PerspBilinear, Scene::Mesh, 0x847fc5a5),
     (Mode::PerspBilinear, Scene::Scene200, 0x6c05629d),
+    (Mode::AntiAliasedSub, Scene::Big, 0x620d8839),
+    (Mode::AntiAliasedSub, Scene::Small, 0x827ee315),
+    (Mode::AntiAliasedSub, Scene::Mesh, 0xd8b81fd5),
+    (Mode::AntiAliasedSub, Scene::Scene200, 0x8b7f45fd),
 ];
 
 /// The expected checksum of `mode` on `scene`.
@@ -303,7 +314,8 @@ pub fn draw<const N: usize>(
         }
         Mode::Translucent => draw_translucent(triangles, frame),
         Mode::GouraudDither => draw_gouraud(triangles, frame, whole, true),
-        Mode::AntiAliased => draw_anti_aliased(triangles, frame),
+        Mode::AntiAliased => draw_anti_aliased(triangles, frame, whole),
+        Mode::AntiAliasedSub => draw_anti_aliased(triangles, frame, subpixel_triangle),
         Mode::FlatSub => draw_flat(triangles, frame, subpixel_triangle),
         Mode::GouraudSub => draw_gouraud(triangles, frame, subpixel_triangle, false),
         Mode::GouraudZSub => draw_gouraud_z(triangles, frame, work.depths, subpixel_triangle),
@@ -357,10 +369,13 @@ pub fn covered_pixels(mode: Mode, triangles: &[SceneTriangle]) -> u32 {
 
 /// Flat with anti-aliased edges, each edge pixel blended over what the frame holds.
 #[inline(never)]
-fn draw_anti_aliased(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+fn draw_anti_aliased<G: Shape>(
+    triangles: &[SceneTriangle],
+    frame: &mut Framebuffer<'_, Rgb565>,
+    shape: fn(&SceneTriangle) -> G,
+) {
     for t in triangles {
-        let [a, b, c] = t.vertices;
-        let _ = frame.draw_anti_aliased(&Triangle::new(a, b, c), &FlatStyle::new(t.color));
+        let _ = frame.draw_anti_aliased(&shape(t), &FlatStyle::new(t.color));
     }
 }
 

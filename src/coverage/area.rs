@@ -707,6 +707,7 @@ pub(crate) fn walk_subpixel_coverage<K: CoverageSink>(
 
 /// [`walk_coverage`] for vertices in 1/4096 pixel (pixel centres at whole pixels): in `i32`
 /// from the clip's corner when the vertices lie within [`NARROW_REACH`] of it, else in `i64`.
+#[inline(always)]
 fn walk_coverage_of<K: CoverageSink>(
     vertices: [(i64, i64); 3],
     orientation: crate::Orientation,
