@@ -770,18 +770,11 @@ fn walk_chains<P: Coord, K: CoverageSink>(
 ) -> Result<(), K::Error> {
     // Positions are shifted by half a pixel (pixel squares from whole units): up to 2^39 in
     // magnitude in `i64`, which each edge's set-up handles.
-    let mut polygon = [Position {
-        x: P::ZERO,
-        y: P::ZERO,
-    }; MAX_VERTICES];
-    for (position, (x, y)) in polygon.iter_mut().zip(vertices) {
-        *position = Position {
-            x: x + P::HALF,
-            y: y + P::HALF,
-        };
-    }
-    let len = 3;
-    let polygon = &polygon[..len];
+    let polygon = vertices.map(|(x, y)| Position {
+        x: x + P::HALF,
+        y: y + P::HALF,
+    });
+    let len = polygon.len();
     // Chains from the top vertex to the bottom one, each way round.
     let top = (0..len)
         .min_by_key(|&i| (polygon[i].y, polygon[i].x))
@@ -789,29 +782,11 @@ fn walk_chains<P: Coord, K: CoverageSink>(
     let bottom = (0..len)
         .max_by_key(|&i| (polygon[i].y, polygon[i].x))
         .unwrap_or(0);
-    let walk = |forward: bool, out: &mut [Position<P>; MAX_VERTICES]| {
-        let mut count = 0;
-        let mut i = top;
-        loop {
-            out[count] = polygon[i];
-            count += 1;
-            if i == bottom || count == MAX_VERTICES {
-                break;
-            }
-            i = if forward {
-                (i + 1) % len
-            } else {
-                (i + len - 1) % len
-            };
-        }
-        count
-    };
-    let unset = Position {
-        x: P::ZERO,
-        y: P::ZERO,
-    };
-    let (mut forward, mut backward) = ([unset; MAX_VERTICES], [unset; MAX_VERTICES]);
-    let (forwards, backwards) = (walk(true, &mut forward), walk(false, &mut backward));
+    let (next, previous) = ((top + 1) % len, (top + len - 1) % len);
+    let forward = [polygon[top], polygon[next], polygon[previous]];
+    let backward = [polygon[top], polygon[previous], polygon[next]];
+    // Going forward, the bottom vertex is one step away (then two going back) or two.
+    let (forwards, backwards) = if next == bottom { (2, 3) } else { (3, 2) };
     // Going forward from the top vertex leads down the right side when the triangle is
     // clockwise on screen (y down).
     let (right, left) = if clockwise {
