@@ -54,9 +54,10 @@ const NARROW_REACH: i64 = 1 << 28;
 const NARROW_CLIP: i64 = 1 << 17;
 
 /// The integer type of positions and of the per-row state: `i32` for triangles near the clip,
-/// where each addition and comparison is one instruction on 32-bit cores (two and more for
-/// `i64`: Cortex-M0 anti-aliased small triangles took a third more instructions), `i64` for
-/// any other. Set-ups (one per edge) compute in `i64` either way and narrow what they keep.
+/// where each addition and comparison is one instruction on 32-bit cores (two or more in
+/// `i64`; in `i32` anti-aliased triangles take a third fewer instructions on Cortex-M0 and
+/// M4F), `i64` for any other. Set-ups (one per edge) compute in `i64` either way and narrow
+/// what they keep.
 trait Coord:
     Copy
     + Ord
