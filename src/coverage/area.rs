@@ -197,6 +197,9 @@ impl<P: Coord> Edge<P> {
         } else if dx.unsigned_abs() < 1 << 16 && dy < 1 << 16 {
             // Under 16 pixels each way: the ratio in 1/4096 units.
             ratio_by_digits(dy as u32, dx.unsigned_abs() as u32)
+        } else if (dx | dy).trailing_zeros() >= 4 && dx.unsigned_abs() < 1 << 20 && dy < 1 << 20 {
+            // Vertices in 1/256 pixel (16 units), under 256 pixels each way: in 1/256 pixel.
+            ratio_by_digits((dy >> 4) as u32, (dx.unsigned_abs() >> 4) as u32)
         } else if dy < 1 << 32 {
             ((dy as u64) << 32) / dx.unsigned_abs()
         } else {
