@@ -430,6 +430,20 @@ impl<P: Coord> Chain<P> {
     #[inline]
     fn pieces(&mut self, top: P, out: &mut [Piece<P>; MAX_EDGES]) -> usize {
         let bottom = top + P::PIXEL;
+        // The common row: one edge across the whole strip, its ends where it crosses the
+        // strip's top and bottom (what the general case below makes of it too).
+        if let Some(edge) = self.edges[..self.count].get_mut(self.next) {
+            if edge.a.y < top && edge.b.y > bottom {
+                let (start_x, end_x) = (edge.x_at(top), edge.x_at(bottom));
+                out[0] = Piece {
+                    rows: P::PIXEL,
+                    left: start_x.min(end_x),
+                    right: start_x.max(end_x),
+                    rows_per_column: edge.rows_per_column,
+                };
+                return 1;
+            }
+        }
         while self.next < self.count && self.edges[self.next].b.y <= top {
             self.next += 1;
         }
