@@ -232,6 +232,20 @@ fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
     (lanes.wrapping_mul(COPIES) >> 32) as u16
 }
 
+/// [`ChannelColor::over`] for the 5-6-5 layouts on their raw bits, as `over_channels` computes
+/// it (opacity in 256ths): each field taken out by shifts and put back without masks, since a
+/// blend lies between its two values and so within its field.
+#[inline(always)]
+fn over_565(source: u16, under: u16, opacity: u8) -> u16 {
+    let a = i32::from(opacity) + i32::from(opacity >> 7);
+    let blend = |s: i32, d: i32| d + (((s - d) * a + 128) >> 8);
+    let (s, d) = (i32::from(source), i32::from(under));
+    let high = blend(s >> 11, d >> 11);
+    let middle = blend((s >> 5) & 63, (d >> 5) & 63);
+    let low = blend(s & 31, d & 31);
+    ((high << 11) | (middle << 5) | low) as u16
+}
+
 /// `[f(0), f(1), ..., f(N - 1)]`, written out for up to four channels (see [`for_each_slot`]).
 #[inline(always)]
 pub(crate) fn per_channel<T: Copy + Default, const N: usize>(f: impl FnMut(usize) -> T) -> [T; N] {
@@ -281,6 +295,12 @@ macro_rules! rgb565_channels {
             #[inline(always)]
             fn from_channels([r, g, b]: [u8; 3]) -> Self {
                 Self::new(r, g, b)
+            }
+
+            #[inline(always)]
+            fn over(self, under: Self, opacity: u8) -> Self {
+                use embedded_graphics::pixelcolor::{raw::RawU16, IntoStorage};
+                RawU16::new(over_565(self.into_storage(), under.into_storage(), opacity)).into()
             }
 
             #[cfg(target_pointer_width = "64")]
@@ -390,6 +410,23 @@ mod tests {
             }
             let generic = blend_channels(corners, x, y);
             assert_eq!(generic, Rgb565::bilinear(corners, x, y));
+        }
+    }
+
+    #[test]
+    fn rgb565_raw_blend_equals_channel_blend() {
+        use embedded_graphics::pixelcolor::{raw::RawU16, Bgr565};
+        fn check<C: ChannelColor + From<RawU16> + core::fmt::Debug>(s: u16, d: u16, opacity: u8) {
+            let (s, d) = (C::from(RawU16::new(s)), C::from(RawU16::new(d)));
+            let want = over_channels(s, d, opacity);
+            assert_eq!(s.over(d, opacity), want, "{s:?} over {d:?} at {opacity}");
+        }
+        let mut rng = crate::test_rng::XorShift(0x2545_F491_4F6C_DD1D);
+        for _ in 0..200_000 {
+            let r = rng.next_u64();
+            let (s, d, opacity) = (r as u16, (r >> 16) as u16, (r >> 32) as u8);
+            check::<Rgb565>(s, d, opacity);
+            check::<Bgr565>(s, d, opacity);
         }
     }
 
