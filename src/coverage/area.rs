@@ -23,7 +23,7 @@
 use core::{
     fmt::Debug,
     iter::Sum,
-    ops::{Add, AddAssign, Shl, Shr, Sub},
+    ops::{Add, AddAssign, Shl, Shr, Sub, SubAssign},
 };
 
 use embedded_graphics::primitives::Rectangle;
@@ -66,6 +66,7 @@ trait Coord:
     + Add<Output = Self>
     + Sub<Output = Self>
     + AddAssign
+    + SubAssign
     + Shl<u32, Output = Self>
     + Shr<u32, Output = Self>
     + Sum
@@ -229,11 +230,22 @@ impl<P: Coord> Edge<P> {
             self.x += self.step;
             self.remainder += self.step_remainder;
             if self.remainder >= self.dy {
-                self.remainder = self.remainder - self.dy;
+                self.remainder -= self.dy;
                 self.x += P::narrow(1);
             }
         }
         self.x
+    }
+
+    /// The piece of this edge `rows` high, from where it crosses at `start_x` to `end_x`.
+    #[inline(always)]
+    fn piece(&self, rows: P, start_x: P, end_x: P) -> Piece<P> {
+        Piece {
+            rows,
+            left: start_x.min(end_x),
+            right: start_x.max(end_x),
+            rows_per_column: self.rows_per_column,
+        }
     }
 }
 
@@ -410,8 +422,8 @@ impl<P: Coord> Chain<P> {
 
     /// Makes this the chain through `vertices` (from the top vertex down to the bottom one).
     /// In place, each edge written where it is kept: built and returned, the chain and its
-    /// edges (88 bytes each) went through three `memcpy` calls, about 700 instructions per
-    /// small triangle on Cortex-M0.
+    /// edges (88 bytes each in `i64`) went through three `memcpy` calls, about 700 instructions
+    /// per small triangle on Cortex-M0 (measured again by value in `i32`: +1.9%).
     fn start(&mut self, vertices: &[Position<P>], first_row: i64) {
         self.count = 0;
         self.next = 0;
@@ -435,12 +447,7 @@ impl<P: Coord> Chain<P> {
         if let Some(edge) = self.edges[..self.count].get_mut(self.next) {
             if edge.a.y < top && edge.b.y > bottom {
                 let (start_x, end_x) = (edge.x_at(top), edge.x_at(bottom));
-                out[0] = Piece {
-                    rows: P::PIXEL,
-                    left: start_x.min(end_x),
-                    right: start_x.max(end_x),
-                    rows_per_column: edge.rows_per_column,
-                };
+                out[0] = edge.piece(P::PIXEL, start_x, end_x);
                 return 1;
             }
         }
@@ -463,12 +470,7 @@ impl<P: Coord> Chain<P> {
                 (bottom, edge.x_at(bottom))
             };
             if end > start {
-                out[count] = Piece {
-                    rows: end - start,
-                    left: start_x.min(end_x),
-                    right: start_x.max(end_x),
-                    rows_per_column: edge.rows_per_column,
-                };
+                out[count] = edge.piece(end - start, start_x, end_x);
                 count += 1;
             }
         }

@@ -223,11 +223,7 @@ impl SubPixelTriangle {
             [Ok(a), Ok(b), Ok(c), Ok(d)] => i32::cross_sign(a, b, c, d),
             _ => i64::cross_sign(deltas[0], deltas[1], deltas[2], deltas[3]),
         };
-        match sign {
-            core::cmp::Ordering::Greater => Orientation::Clockwise,
-            core::cmp::Ordering::Less => Orientation::CounterClockwise,
-            core::cmp::Ordering::Equal => Orientation::Degenerate,
-        }
+        Orientation::of_area_sign(sign)
     }
 
     /// True when the vertices are collinear or coincident; such triangles draw nothing.

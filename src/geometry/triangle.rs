@@ -61,6 +61,18 @@ pub enum Orientation {
     Degenerate,
 }
 
+impl Orientation {
+    /// The orientation whose doubled signed area has `sign`.
+    #[inline(always)]
+    pub(crate) fn of_area_sign(sign: Ordering) -> Self {
+        match sign {
+            Ordering::Greater => Orientation::Clockwise,
+            Ordering::Less => Orientation::CounterClockwise,
+            Ordering::Equal => Orientation::Degenerate,
+        }
+    }
+}
+
 impl Triangle {
     /// Creates a triangle from three vertices.
     ///
@@ -121,11 +133,7 @@ impl Triangle {
         } else {
             cross_sign::<i64>(&self.vertices)
         };
-        match sign {
-            Ordering::Greater => Orientation::Clockwise,
-            Ordering::Less => Orientation::CounterClockwise,
-            Ordering::Equal => Orientation::Degenerate,
-        }
+        Orientation::of_area_sign(sign)
     }
 
     /// True when the vertices are collinear or coincident; such triangles draw nothing.
