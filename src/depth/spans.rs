@@ -106,7 +106,7 @@ where
             return Ok(());
         };
         let start = self.depth.at(span.x, span.y)[0];
-        let step = self.depth.planes.step[0];
+        let step = self.depth.step[0];
         // In i32 the comparison needs no unsigned tricks: both sides stay below 2^17.
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
         let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;

@@ -346,7 +346,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             shift,
         };
         for k in 0..P {
-            this.across[k] = this.planes.planes.dx[k] << shift;
+            this.across[k] = this.planes.dx[k] << shift;
         }
         for k in 0..N {
             this.base[k] = base[k].wrapping_add(bias) as i32;
@@ -392,7 +392,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             }
         } else if len > 1 {
             for k in 0..P {
-                let dx = self.planes.planes.dx[k];
+                let dx = self.planes.dx[k];
                 walk.values[k] = walk.values[k].wrapping_add(mul_small(dx, len - 1));
             }
             end = self.attributes_where(&walk.values, inline);

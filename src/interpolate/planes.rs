@@ -1021,11 +1021,17 @@ fn numerators_split(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
 /// both are sums in wrapping 64-bit arithmetic.
 #[derive(Clone, Debug)]
 pub(crate) struct TrackedPlanes<const N: usize, const SETUP: u32 = 32> {
-    pub(crate) planes: Planes<N, SETUP>,
-    /// The last point evaluated; at first the reference point.
+    /// The last point evaluated; at first the planes' origin. The planes are kept from there:
+    /// the point and the values replace the origin and its values (no copy of either).
     last: Cell<(i32, i32)>,
     /// The values there, each updated in place.
     values: [Cell<i64>; N],
+    /// d/dx in 2^-SETUP units per pixel ([`Planes::dx`]).
+    pub(crate) dx: [i64; N],
+    /// d/dy in 2^-SETUP units per pixel.
+    dy: [i64; N],
+    /// d/dx in 2^-16 units per pixel ([`Planes::step`]).
+    pub(crate) step: [u32; N],
     /// The last move one row down, in columns: spans start where the left edge steps, which
     /// moves the same number of columns each row, or one more.
     row_move: Cell<i32>,
@@ -1042,9 +1048,11 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         Self {
             last: Cell::new((planes.origin.x, planes.origin.y)),
             values: planes.base.map(Cell::new),
+            dx: planes.dx,
+            dy: planes.dy,
+            step: planes.step,
             row_move: Cell::new(0),
             row_sum: planes.dy.map(Cell::new),
-            planes,
         }
     }
 
@@ -1056,7 +1064,6 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         let (last_x, last_y) = self.last.get();
         self.last.set((x, y));
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
-        let planes = &self.planes;
         let add = |cell: &Cell<i64>, value: i64| cell.set(cell.get().wrapping_add(value));
         if dy == 1 {
             // One row down: the last such move's sum, give or take a column; a new move
@@ -1064,18 +1071,18 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
             let sum = |k: usize| self.row_sum[k].get();
             match dx.wrapping_sub(self.row_move.get()) {
                 0 => (0..N).for_each(|k| add(&self.values[k], sum(k))),
-                1 => (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_add(planes.dx[k]))),
+                1 => (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_add(self.dx[k]))),
                 -1 => {
-                    (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_sub(planes.dx[k])));
+                    (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_sub(self.dx[k])));
                 }
                 _ => {
                     let columns = i64::from(dx);
                     for k in 0..N {
                         let product = match i16::try_from(dx) {
-                            Ok(columns) => mul_count(planes.dx[k], columns),
-                            Err(_) => planes.dx[k].wrapping_mul(columns),
+                            Ok(columns) => mul_count(self.dx[k], columns),
+                            Err(_) => self.dx[k].wrapping_mul(columns),
                         };
-                        let sum = planes.dy[k].wrapping_add(product);
+                        let sum = self.dy[k].wrapping_add(product);
                         self.row_sum[k].set(sum);
                         add(&self.values[k], sum);
                     }
@@ -1085,21 +1092,32 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         } else if dy == 0 && (-Self::NEAR..=Self::NEAR).contains(&dx) {
             for k in 0..N {
                 let step = if dx < 0 {
-                    planes.dx[k].wrapping_neg()
+                    self.dx[k].wrapping_neg()
                 } else {
-                    planes.dx[k]
+                    self.dx[k]
                 };
                 for _ in 0..dx.unsigned_abs() {
                     add(&self.values[k], step);
                 }
             }
-        } else if cfg!(target_has_atomic = "32") {
-            // One multiply per product: inline, as the other moves.
-            let values = self.planes.at_exact(x, y);
-            (0..N).for_each(|k| self.values[k].set(values[k]));
         } else {
-            self.move_far(x, y);
+            let columns = i64::from(x) - i64::from(last_x);
+            let rows = i64::from(y) - i64::from(last_y);
+            if cfg!(target_has_atomic = "32") {
+                // One multiply per product: inline, as the other moves.
+                (0..N).for_each(|k| add(&self.values[k], self.product(k, columns, rows)));
+            } else {
+                self.move_far(columns, rows);
+            }
         }
+    }
+
+    /// What a move of `columns` and `rows` adds to value `k` (wrapping).
+    #[inline(always)]
+    fn product(&self, k: usize, columns: i64, rows: i64) -> i64 {
+        self.dx[k]
+            .wrapping_mul(columns)
+            .wrapping_add(self.dy[k].wrapping_mul(rows))
     }
 
     /// [`TrackedPlanes::track`] to a point more than a row away on cores without a 64-bit
@@ -1109,19 +1127,15 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     /// that the near moves keep their registers.
     #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
     #[inline(never)]
-    fn move_far(&self, x: i32, y: i32) {
-        let planes = &self.planes;
-        let columns = i16::try_from(i64::from(x) - i64::from(planes.origin.x));
-        let rows = i16::try_from(i64::from(y) - i64::from(planes.origin.y));
-        let values = match (columns, rows) {
-            (Ok(columns), Ok(rows)) => core::array::from_fn(|k| {
-                planes.base[k]
-                    .wrapping_add(mul_count(planes.dx[k], columns))
-                    .wrapping_add(mul_count(planes.dy[k], rows))
+    fn move_far(&self, columns: i64, rows: i64) {
+        let add = |cell: &Cell<i64>, value: i64| cell.set(cell.get().wrapping_add(value));
+        match (i16::try_from(columns), i16::try_from(rows)) {
+            (Ok(columns), Ok(rows)) => (0..N).for_each(|k| {
+                let sum = mul_count(self.dx[k], columns).wrapping_add(mul_count(self.dy[k], rows));
+                add(&self.values[k], sum);
             }),
-            _ => planes.at_exact(x, y),
-        };
-        (0..N).for_each(|k| self.values[k].set(values[k]));
+            _ => (0..N).for_each(|k| add(&self.values[k], self.product(k, columns, rows))),
+        }
     }
 
     /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].

@@ -286,7 +286,7 @@ where
         let high: [u8; N] =
             core::array::from_fn(|k| channels.iter().map(|c| c[k]).max().unwrap_or(0));
         let mut values = self.planes.at(run.x, run.y);
-        let step = self.planes.planes.step;
+        let step = self.planes.step;
         let mut x = run.x;
         let colors = (0..run.len).map(|_| {
             let threshold = if self.dither {
@@ -368,7 +368,7 @@ where
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
-        (x, y, self.0.at(x, y), self.0.planes.step)
+        (x, y, self.0.at(x, y), self.0.step)
     }
 
     #[inline(always)]

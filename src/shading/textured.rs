@@ -829,7 +829,7 @@ where
         let planes = &self.coordinates;
         // The coordinates at the run's start, evaluated once for the test and the loop.
         let start = planes.at_exact(run.x, run.y);
-        let steps = planes.planes.dx;
+        let steps = planes.dx;
         let across = steps.map(|step| across(run.len - 1, step));
         if self.inside(start, across) {
             let steps = (steps[0], steps[1]);
