@@ -768,8 +768,9 @@ where
         if self.depths.is_none() && scene.triangles.iter().any(|t| t.depths.is_some()) {
             return Err(BandError::Setup(Error::BandDepth));
         }
-        // Set-ups kept from an earlier frame may belong to other triangles now.
-        self.setups.forget();
+        // Set-ups kept from an earlier frame may belong to other triangles now (a cache sized
+        // for the largest scene need not be cleared whole for a smaller one).
+        self.setups.forget(scene.triangles.len());
         let bottom = i64::from(screen.top_left.y) + i64::from(screen.size.height);
         let mut top = i64::from(screen.top_left.y);
         while top < bottom {

@@ -236,12 +236,15 @@ proptest! {
             prop_assert!(got == want, "band height {} differs", rows);
         }
         // Kept set-ups: a slot for every triangle, for some, for none; the slots used for
-        // another scene first, whose set-ups must not be taken for this one's.
+        // another scene first, whose set-ups must not be taken for this one's, then for a
+        // scene of no triangles (each frame forgets only the slots its own scene reads).
         let slots: Vec<SetupSlot> = (0..64).map(|_| SetupSlot::EMPTY).collect();
         let count = [64, rng.range(1, 8) as usize, 0][rng.range(0, 2) as usize];
         let other = random_scene(&mut rng, texture, test, origin);
+        let empty = Scene::new(scene.screen()).with_depth_test(test);
         for rows in [1, 7, H] {
             let _ = banded(&other, rows, background, far, Some(&slots[..count]));
+            let _ = banded(&empty, rows, background, far, Some(&slots[..count]));
             let got = banded(&scene, rows, background, far, Some(&slots[..count]));
             prop_assert!(got == want, "band height {} with {} set-up slots differs", rows, count);
         }

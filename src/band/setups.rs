@@ -119,9 +119,11 @@ pub trait SetupCache: sealed::Sealed + Copy {
     #[doc(hidden)]
     fn slot(&self, index: usize) -> Option<&SetupSlot>;
 
-    /// Forgets every slot's set-up (a new frame: the scene may have changed).
+    /// Forgets the set-ups of the slots of the first `triangles` scene triangles (a new
+    /// frame: the scene may have changed). Only those are read this frame, and each frame
+    /// forgets those its scene reads first.
     #[doc(hidden)]
-    fn forget(&self);
+    fn forget(&self, triangles: usize);
 }
 
 /// No set-ups kept: every triangle is set up again in each band it touches.
@@ -148,7 +150,7 @@ impl SetupCache for NoSetupCache {
     }
 
     #[inline(always)]
-    fn forget(&self) {}
+    fn forget(&self, _: usize) {}
 }
 
 impl SetupCache for &[SetupSlot] {
@@ -161,8 +163,8 @@ impl SetupCache for &[SetupSlot] {
         self.get(index)
     }
 
-    fn forget(&self) {
-        for slot in *self {
+    fn forget(&self, triangles: usize) {
+        for slot in self.iter().take(triangles) {
             slot.clear();
         }
     }
