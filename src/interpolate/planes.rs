@@ -679,17 +679,33 @@ fn scale_by(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 
 }
 
 /// `floor(2^62 / d)` for `0 < d < 2^16` on Arm: by [`reciprocal_by_digits`] where 32-bit
-/// division is an instruction, by [`reciprocal_by_inverse`] on Cortex-M0, where each is a
-/// library call of about 140 instructions (measured: three of them were 15% of a small
-/// Gouraud triangle).
+/// division is an instruction; on Cortex-M0, where each division is a library call of about
+/// 140 instructions (measured: three of them were 15% of a small Gouraud triangle), from
+/// [`TINY_RECIPROCALS`] below 128 and by [`reciprocal_by_inverse`] above.
 #[inline(always)]
 fn reciprocal_small(d: u32) -> u64 {
     if cfg!(target_has_atomic = "32") {
         reciprocal_by_digits::<16>(d)
+    } else if let Some(&reciprocal) = TINY_RECIPROCALS.get(d as usize) {
+        reciprocal
     } else {
         reciprocal_by_inverse(d)
     }
 }
+
+/// `floor(2^62 / d)` for the doubled areas of triangles under 64 pixels (`d` below 128;
+/// entry 0 unused), computed at compile time: on Cortex-M0 [`reciprocal_by_inverse`] costs
+/// about 190 instructions, a ninth of a small Gouraud triangle, and meshes on small displays
+/// are mostly such triangles. 1 KB of flash, only where there is no divider.
+const TINY_RECIPROCALS: [u64; 128] = {
+    let mut table = [0; 128];
+    let mut d = 1;
+    while d < 128 {
+        table[d] = (1u64 << 62) / d as u64;
+        d += 1;
+    }
+    table
+};
 
 /// [`reciprocal_by_digits`] without a division: each base-2^16 digit of the quotient is
 /// estimated by a multiplication with `2^32 / d` (from [`reciprocal`]'s table and Newton
