@@ -748,8 +748,11 @@ fn reciprocal_by_correction(d: u32) -> u64 {
     let (normal, shift) = normalise(d);
     let inverse = reciprocal(normal);
     let remainder = |q: u64| (1u64 << 62).wrapping_sub(mul_low(q, d)) as i64;
-    // About 2^(63 - shift) / d * 2^(shift - 1); shift is 1 to 15.
-    let mut q = u64::from(inverse) << (shift - 1);
+    // About 2^(63 - shift) / d * 2^(shift - 1); shift is 1 to 15. Shifted in 32-bit halves: a
+    // variable 64-bit shift is a library call on Cortex-M0 (`>> 1 >> (32 - shift)` is defined
+    // for a zero shift too).
+    let up = shift - 1;
+    let mut q = (u64::from(inverse >> 1 >> (32 - shift)) << 32) | u64::from(inverse << up);
     let error = remainder(q);
     // error / d as error * inverse / 2^(63 - shift), from the error's halves: within 3.
     let magnitude = error.unsigned_abs();
