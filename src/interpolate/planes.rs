@@ -757,7 +757,13 @@ fn reciprocal_by_correction(d: u32) -> u64 {
     // error / d as error * inverse / 2^(63 - shift), from the error's halves: within 3.
     let magnitude = error.unsigned_abs();
     let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
-    let step = (mul_u32(high, inverse) >> (31 - shift)) + (mul_u32(low, inverse) >> (63 - shift));
+    // The upper word is below 2^5: two 16-bit products on Cortex-M0, not four.
+    let high_product = if cfg!(target_has_atomic = "32") {
+        mul_u32(high, inverse)
+    } else {
+        mul_u16_u32(high as u16, inverse)
+    };
+    let step = (high_product >> (31 - shift)) + (mul_u32(low, inverse) >> (63 - shift));
     q = if error < 0 { q - step } else { q + step };
     let (mut rest, d) = (remainder(q), i64::from(d));
     while rest < 0 {
@@ -769,6 +775,15 @@ fn reciprocal_by_correction(d: u32) -> u64 {
         rest -= d;
     }
     q
+}
+
+/// `a * b` in full for a 16-bit `a`: two 16-bit multiplies (Cortex-M0 has no wider one).
+/// Tested on every host.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(always)]
+fn mul_u16_u32(a: u16, b: u32) -> u64 {
+    let a = u32::from(a);
+    (u64::from(a * (b >> 16)) << 16) + u64::from(a * (b & 0xFFFF))
 }
 
 /// The low 64 bits of `q * d`: two 32-bit products.
@@ -1686,6 +1701,19 @@ mod tests {
         // Computed for the first, the third, the fourth, the fifth and the last.
         assert_eq!(calls.get(), 5);
         assert_eq!(memo.key.get(), 14);
+    }
+
+    #[test]
+    fn sixteen_bit_products_are_the_full_product() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..100_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let (a, b) = (seed as u16, (seed >> 32) as u32);
+            assert_eq!(mul_u16_u32(a, b), u64::from(a) * u64::from(b), "{a} {b}");
+        }
+        assert_eq!(mul_u16_u32(u16::MAX, u32::MAX), 0xFFFF * 0xFFFF_FFFF);
     }
 
     #[test]
