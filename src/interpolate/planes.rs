@@ -1156,7 +1156,8 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
 
     /// [`TrackedPlanes::track`] to a point more than a row away on cores without a 64-bit
     /// multiply (Cortex-M0): a triangle's first span, and a band's triangles in every band
-    /// after their first. As [`Planes::at_exact`], by [`mul_count`] where the moves fit (in
+    /// after their first: the move of `columns` and `rows` from the last point, as
+    /// [`Planes::at_exact`] would evaluate it, by [`mul_count`] where the moves fit (in
     /// `at_exact`, inline in every span loop's set-up, that measured slower). Out of line, so
     /// that the near moves keep their registers.
     #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
