@@ -1,9 +1,8 @@
 //! How a colour is kept in one element of a framebuffer slice.
 
 use embedded_graphics::pixelcolor::{
-    raw::{RawU16, RawU24, RawU8},
-    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, IntoStorage, PixelColor,
-    Rgb555, Rgb565, Rgb666, Rgb888,
+    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, PixelColor,
+    Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
 };
 
 /// A slice element that holds one pixel of colour `C`.
@@ -61,45 +60,68 @@ impl<C: PixelColor> StoredPixel<C> for C {
     }
 }
 
-macro_rules! raw_storage {
-    ($storage:ty, $raw:ty => $($color:ty),+) => {$(
+// The conversions go through the channels and the colours' `const fn` constructors, not through
+// `IntoStorage` and `From<Raw..>`: embedded-graphics marks those conversions `#[inline]`
+// nowhere, and at `opt-level = "s"` each became a call per pixel (a blend of `Rgb565` pixels on
+// Cortex-M0 cost 82.7 instructions a pixel against 61.7 so). At `opt-level = 3` both ways fold
+// to the bits themselves. The tests check them against embedded-graphics' own conversions.
+macro_rules! rgb_storage {
+    ($storage:ty => $($color:ty: ($r:expr, $g:expr, $b:expr)),+) => {$(
         impl StoredPixel<$color> for $storage {
             #[inline(always)]
             fn store(color: $color) -> Self {
-                color.into_storage()
+                (<$storage>::from(color.r()) << $r)
+                    | (<$storage>::from(color.g()) << $g)
+                    | (<$storage>::from(color.b()) << $b)
             }
 
             #[inline(always)]
             fn load(self) -> $color {
-                <$raw>::new(self).into()
+                // `new` keeps each channel's low bits, as the raw types' conversions do.
+                <$color>::new((self >> $r) as u8, (self >> $g) as u8, (self >> $b) as u8)
             }
         }
     )+};
 }
 
-raw_storage!(u16, RawU16 => Rgb565, Bgr565, Rgb555, Bgr555);
-raw_storage!(u32, RawU24 => Rgb888, Bgr888, Rgb666, Bgr666);
-raw_storage!(u8, RawU8 => Gray8);
+rgb_storage!(u16 => Rgb565: (11, 5, 0), Bgr565: (0, 5, 11), Rgb555: (10, 5, 0), Bgr555: (0, 5, 10));
+rgb_storage!(u32 => Rgb888: (16, 8, 0), Bgr888: (0, 8, 16), Rgb666: (12, 6, 0), Bgr666: (0, 6, 12));
 
-macro_rules! small_storage {
+macro_rules! gray_storage {
     ($($color:ty),+) => {$(
         impl StoredPixel<$color> for u8 {
             #[inline(always)]
             fn store(color: $color) -> Self {
-                color.into_storage()
+                color.luma()
             }
 
             #[inline(always)]
             fn load(self) -> $color {
-                // Keep the low bits the format has, as the raw types' constructors do.
-                let raw = <<$color as PixelColor>::Raw as embedded_graphics::pixelcolor::raw::RawData>::from_u32(u32::from(self));
-                raw.into()
+                // `new` keeps the low bits the format has, as the raw types' constructors do.
+                <$color>::new(self)
             }
         }
     )+};
 }
 
-small_storage!(Gray2, Gray4, BinaryColor);
+gray_storage!(Gray8, Gray4, Gray2);
+
+impl StoredPixel<BinaryColor> for u8 {
+    #[inline(always)]
+    fn store(color: BinaryColor) -> Self {
+        u8::from(color == BinaryColor::On)
+    }
+
+    #[inline(always)]
+    fn load(self) -> BinaryColor {
+        // The low bit, as `RawU1` keeps.
+        if self & 1 == 0 {
+            BinaryColor::Off
+        } else {
+            BinaryColor::On
+        }
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -123,6 +145,48 @@ mod tests {
         round_trip::<Gray2, u8>(&[Gray2::new(3), Gray2::new(1)]);
         round_trip::<BinaryColor, u8>(&[BinaryColor::On, BinaryColor::Off]);
         round_trip::<Rgb565, Rgb565>(&[Rgb565::CYAN]);
+    }
+
+    /// Every value of the 8- and 16-bit formats, and a spread of the 24-bit ones, stored and
+    /// loaded as embedded-graphics' own raw conversions do.
+    #[test]
+    fn storage_is_embedded_graphics_raw_conversion() {
+        use embedded_graphics::pixelcolor::{
+            raw::{RawData, RawU1, RawU16, RawU2, RawU24, RawU4, RawU8},
+            IntoStorage,
+        };
+        fn check<C, R, S>(raw: S)
+        where
+            C: PixelColor<Raw = R> + IntoStorage<Storage = S> + From<R> + core::fmt::Debug,
+            R: RawData<Storage = S>,
+            S: StoredPixel<C> + PartialEq + core::fmt::Debug + Into<u32>,
+        {
+            let loaded = C::from(R::from_u32(raw.into()));
+            assert_eq!(raw.load(), loaded, "{raw:?}");
+            assert_eq!(S::store(loaded), loaded.into_storage(), "{loaded:?}");
+        }
+        for raw in 0..=u16::MAX {
+            check::<Rgb565, RawU16, u16>(raw);
+            check::<Bgr565, RawU16, u16>(raw);
+            check::<Rgb555, RawU16, u16>(raw);
+            check::<Bgr555, RawU16, u16>(raw);
+        }
+        for raw in 0..=u8::MAX {
+            check::<Gray8, RawU8, u8>(raw);
+            check::<Gray4, RawU4, u8>(raw);
+            check::<Gray2, RawU2, u8>(raw);
+            check::<BinaryColor, RawU1, u8>(raw);
+        }
+        let mut raw = 0u32;
+        for _ in 0..100_000 {
+            raw = raw.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            for value in [raw, raw & 0xFF_FFFF] {
+                check::<Rgb888, RawU24, u32>(value);
+                check::<Bgr888, RawU24, u32>(value);
+                check::<Rgb666, RawU24, u32>(value);
+                check::<Bgr666, RawU24, u32>(value);
+            }
+        }
     }
 
     #[test]
