@@ -446,12 +446,15 @@ pub(crate) fn fill_run<S: Copy>(run: &mut [S], value: S) {
             }
         }
     } else if n < 16 {
-        run[..8].copy_from_slice(&[value; 8]);
-        run[n - 8..].copy_from_slice(&[value; 8]);
+        // Groups of eight stores, not blocks copied from an array: at `opt-level = "s"` each
+        // block copy became a call of `memcpy`.
+        eight(&mut run[..8], value);
+        eight(&mut run[n - 8..], value);
     } else if n <= 32 {
-        let block = [value; 16];
-        run[..16].copy_from_slice(&block);
-        run[n - 16..].copy_from_slice(&block);
+        eight(&mut run[..8], value);
+        eight(&mut run[8..16], value);
+        eight(&mut run[n - 16..n - 8], value);
+        eight(&mut run[n - 8..], value);
     } else {
         fill_eights(run, value);
     }
