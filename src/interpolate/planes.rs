@@ -5,7 +5,7 @@ use core::cell::Cell;
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 use super::perspective::{mul_u32, reciprocal};
-use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_count};
+use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_count, shl64, shr64};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -934,7 +934,7 @@ fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     // the 64-bit product became a 64-bit multiply, a library call on Cortex-M0. Shifted by up
     // to 2 it fits 32 bits; further (below 2^61), its part above 32 bits only reaches the
     // result's upper word, through a 32-bit product.
-    let upper = (reciprocal >> 32) << (32 - s);
+    let upper = shl64(reciprocal >> 32, 32 - s);
     // On Cortex-M0 small triangles' numerators are below 2^16: two 16-bit multiplies per
     // product, not four.
     let product = |b: u32| {
@@ -952,9 +952,9 @@ fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     };
     let low = product(reciprocal as u32);
     let below = (whole < 0) != negative;
-    let half = 1u64 << (s - 1);
+    let half = shl64(1, s - 1);
     // `low` is below 2^31 * 2^32: adding half a unit cannot carry out.
-    let quotient = high.wrapping_add((low + if below { half - 1 } else { half }) >> s);
+    let quotient = high.wrapping_add(shr64(low + if below { half - 1 } else { half }, s));
     if below {
         quotient.wrapping_neg() as i64
     } else {

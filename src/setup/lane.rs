@@ -283,6 +283,26 @@ fn mul_small_split(value: i64, small: u32) -> i64 {
     (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
 }
 
+/// `value << n` for `n` below 32, from 32-bit shifts and without a branch. Where the optimiser
+/// cannot see `n` (`opt-level = "s"` keeps some set-up shifts variable) a 64-bit shift is a
+/// library call on Cortex-M0 (`__aeabi_llsl`).
+#[inline(always)]
+pub(crate) fn shl64(value: u64, n: u32) -> u64 {
+    debug_assert!(n < 32);
+    let (high, low) = ((value >> 32) as u32, value as u32);
+    // `low >> 1 >> (31 - n)` is `low >> (32 - n)`, defined for a zero `n` too.
+    (u64::from((high << n) | (low >> 1 >> (31 - n))) << 32) | u64::from(low << n)
+}
+
+/// `value >> n` for `n` from 1 to 32, as [`shl64`].
+#[inline(always)]
+pub(crate) fn shr64(value: u64, n: u32) -> u64 {
+    debug_assert!((1..=32).contains(&n));
+    let (high, low) = ((value >> 32) as u32, value as u32);
+    // `x >> 1 >> (n - 1)` is `x >> n`, defined for `n = 32` too.
+    (u64::from(high >> 1 >> (n - 1)) << 32) | u64::from((low >> 1 >> (n - 1)) | (high << (32 - n)))
+}
+
 /// `value * count` (wrapping) for a count of rows or columns within `i16`, as counts across
 /// a screen are: three 32-bit multiplies where a 64-bit one is a library call of about forty
 /// instructions (Cortex-M0), one multiply elsewhere. The same bits either way.
@@ -398,6 +418,25 @@ pub(crate) fn all_in_fast_range(values: [i32; 6]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn split_shifts_are_the_64_bit_ones() {
+        let mut rng = crate::test_rng::XorShift(0x0123_4567_89AB_CDEF);
+        for round in 0..20_000 {
+            let value = match round % 4 {
+                0 => rng.next_u64(),
+                1 => rng.next_u64() >> (round % 64),
+                2 => 1,
+                _ => u64::MAX,
+            };
+            for n in 0..32 {
+                assert_eq!(shl64(value, n), value << n, "{value:#x} << {n}");
+            }
+            for n in 1..=32 {
+                assert_eq!(shr64(value, n), value >> n, "{value:#x} >> {n}");
+            }
+        }
+    }
 
     #[test]
     fn small_products_wrap_as_64_bit_ones() {
