@@ -441,10 +441,10 @@ fn draw_gouraud_z<G: Shape>(
     shape: fn(&SceneTriangle) -> G,
 ) {
     let layers = core::hint::black_box(Layers::new(triangles.len()));
-    depths.fill(u16::MAX);
     let Ok(mut zbuffer) = DepthBuffer::new(depths, WIDTH, HEIGHT) else {
         return;
     };
+    zbuffer.clear(u16::MAX);
     let Ok(mut layered) = DepthTarget::new(frame, &mut zbuffer) else {
         return;
     };
