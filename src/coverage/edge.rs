@@ -7,7 +7,7 @@
 //! `dx / dy`, computed once.
 
 use crate::setup::{
-    lane::{div_rem_floor_counted, div_rem_u64},
+    lane::{div_rem_floor_compact, div_rem_u64},
     Lane,
 };
 
@@ -89,14 +89,10 @@ fn jump<T: Lane>(xa: T, dy: T, step: T, remainder: T, rounding: Rounding, rows_i
     } else if dy < 1 << 15 && step.unsigned_abs() < 1 << 15 {
         let (d, n) = (dy.max(1) as u32, n as u32);
         let numerator = remainder.to_i64() as u32 * n + k as u32;
-        // Below 2^31 (see above); on Cortex-M0 small quotients are counted out, as the edges'
-        // set-up does (bands jump every edge of a triangle to each band's first row).
-        let (quotient, rem) = if cfg!(target_has_atomic = "32") {
-            (numerator / d, numerator % d)
-        } else {
-            let (quotient, rest) = div_rem_floor_counted(numerator as i32, d as i32);
-            (quotient as u32, rest as u32)
-        };
+        // Below 2^31 (see above): the edges' set-up division, which counts small quotients out
+        // on Cortex-M0 (bands jump every edge of a triangle to each band's first row).
+        let (quotient, rem) = div_rem_floor_compact(numerator as i32, d as i32);
+        let (quotient, rem) = (quotient as u32, rem as u32);
         let moved = step as i32 * n as i32 + quotient as i32;
         (i64::from(moved), i64::from(rem) - dy)
     } else {

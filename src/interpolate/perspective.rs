@@ -13,7 +13,7 @@ use fixed::types::I16F16;
 
 use super::{planes::widening_mul, AreaMemo, TrackedPlanes};
 use crate::geometry::Shape;
-use crate::setup::lane::mul_small;
+use crate::setup::lane::{mul_small, shr64};
 
 /// How many pixels apart perspective-correct interpolation divides: the true texture coordinates
 /// are computed at both ends of each sub-span of a row, and stepped linearly between.
@@ -239,15 +239,12 @@ fn mul_i32_u32_split(a: i32, b: u32) -> i64 {
     product.wrapping_sub(excess) as i64
 }
 
-/// The low 32 bits of `value >> shift`, for `shift` from 1 to 32, from the 32-bit halves: a
-/// variable 64-bit shift is a library call on Cortex-M0, and the halves' two cases (shifts
-/// below 32 and from 32) cost twice these five instructions there. `low >> 1 >> (shift - 1)`
-/// is `low >> shift`, defined up to 32.
+/// The low 32 bits of `value >> shift`, for `shift` from 1 to 32: [`shr64`]'s low word (a
+/// variable 64-bit shift is a library call on Cortex-M0, and its two cases, shifts below 32
+/// and from 32, cost twice the five instructions of the low word there).
 #[inline(always)]
 fn low_word_shifted(value: i64, shift: u32) -> i32 {
-    debug_assert!((1..=32).contains(&shift));
-    let (high, low) = ((value >> 32) as u32, value as u32);
-    ((low >> 1 >> (shift - 1)) | (high << (32 - shift))) as i32
+    shr64(value as u64, shift) as i32
 }
 
 /// `q` shifted left until its top bit is set, and by how much: one instruction on

@@ -5,7 +5,7 @@ use core::cell::Cell;
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
 use super::perspective::{mul_u32, reciprocal};
-use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_count, shl64, shr64};
+use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_16_by_32, mul_count, shl64, shr64};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -761,7 +761,7 @@ fn reciprocal_by_correction(d: u32) -> u64 {
     let high_product = if cfg!(target_has_atomic = "32") {
         mul_u32(high, inverse)
     } else {
-        mul_u16_u32(high as u16, inverse)
+        mul_16_by_32(high & 0xFFFF, inverse)
     };
     let step = (high_product >> (31 - shift)) + (mul_u32(low, inverse) >> (63 - shift));
     q = if error < 0 { q - step } else { q + step };
@@ -775,15 +775,6 @@ fn reciprocal_by_correction(d: u32) -> u64 {
         rest -= d;
     }
     q
-}
-
-/// `a * b` in full for a 16-bit `a`: two 16-bit multiplies (Cortex-M0 has no wider one).
-/// Tested on every host.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
-#[inline(always)]
-fn mul_u16_u32(a: u16, b: u32) -> u64 {
-    let a = u32::from(a);
-    (u64::from(a * (b >> 16)) << 16) + u64::from(a * (b & 0xFFFF))
 }
 
 /// The low 64 bits of `q * d`: two 32-bit products.
@@ -939,7 +930,7 @@ fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     // product, not four.
     let product = |b: u32| {
         if cfg!(not(target_has_atomic = "32")) && magnitude < 1 << 16 {
-            (u64::from(magnitude * (b >> 16)) << 16) + u64::from(magnitude * (b & 0xFFFF))
+            mul_16_by_32(magnitude, b)
         } else {
             mul_u32(magnitude, b)
         }
@@ -1098,16 +1089,15 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         let (last_x, last_y) = self.last.get();
         self.last.set((x, y));
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
-        let add = |cell: &Cell<i64>, value: i64| cell.set(cell.get().wrapping_add(value));
         if dy == 1 {
             // One row down: the last such move's sum, give or take a column; a new move
             // multiplies once per plane.
             let sum = |k: usize| self.row_sum[k].get();
             match dx.wrapping_sub(self.row_move.get()) {
-                0 => (0..N).for_each(|k| add(&self.values[k], sum(k))),
-                1 => (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_add(self.dx[k]))),
+                0 => (0..N).for_each(|k| self.add(k, sum(k))),
+                1 => (0..N).for_each(|k| self.add(k, sum(k).wrapping_add(self.dx[k]))),
                 -1 => {
-                    (0..N).for_each(|k| add(&self.values[k], sum(k).wrapping_sub(self.dx[k])));
+                    (0..N).for_each(|k| self.add(k, sum(k).wrapping_sub(self.dx[k])));
                 }
                 _ => {
                     let columns = i64::from(dx);
@@ -1118,7 +1108,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                         };
                         let sum = self.dy[k].wrapping_add(product);
                         self.row_sum[k].set(sum);
-                        add(&self.values[k], sum);
+                        self.add(k, sum);
                     }
                     self.row_move.set(dx);
                 }
@@ -1131,7 +1121,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                     self.dx[k]
                 };
                 for _ in 0..dx.unsigned_abs() {
-                    add(&self.values[k], step);
+                    self.add(k, step);
                 }
             }
         } else {
@@ -1139,11 +1129,17 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
             let rows = i64::from(y) - i64::from(last_y);
             if cfg!(target_has_atomic = "32") {
                 // One multiply per product: inline, as the other moves.
-                (0..N).for_each(|k| add(&self.values[k], self.product(k, columns, rows)));
+                (0..N).for_each(|k| self.add(k, self.product(k, columns, rows)));
             } else {
                 self.move_far(columns, rows);
             }
         }
+    }
+
+    /// Adds `value` to value `k` (wrapping).
+    #[inline(always)]
+    fn add(&self, k: usize, value: i64) {
+        self.values[k].set(self.values[k].get().wrapping_add(value));
     }
 
     /// What a move of `columns` and `rows` adds to value `k` (wrapping).
@@ -1163,13 +1159,12 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
     #[inline(never)]
     fn move_far(&self, columns: i64, rows: i64) {
-        let add = |cell: &Cell<i64>, value: i64| cell.set(cell.get().wrapping_add(value));
         match (i16::try_from(columns), i16::try_from(rows)) {
             (Ok(columns), Ok(rows)) => (0..N).for_each(|k| {
                 let sum = mul_count(self.dx[k], columns).wrapping_add(mul_count(self.dy[k], rows));
-                add(&self.values[k], sum);
+                self.add(k, sum);
             }),
-            _ => (0..N).for_each(|k| add(&self.values[k], self.product(k, columns, rows))),
+            _ => (0..N).for_each(|k| self.add(k, self.product(k, columns, rows))),
         }
     }
 
@@ -1702,19 +1697,6 @@ mod tests {
         // Computed for the first, the third, the fourth, the fifth and the last.
         assert_eq!(calls.get(), 5);
         assert_eq!(memo.key.get(), 14);
-    }
-
-    #[test]
-    fn sixteen_bit_products_are_the_full_product() {
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        for _ in 0..100_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let (a, b) = (seed as u16, (seed >> 32) as u32);
-            assert_eq!(mul_u16_u32(a, b), u64::from(a) * u64::from(b), "{a} {b}");
-        }
-        assert_eq!(mul_u16_u32(u16::MAX, u32::MAX), 0xFFFF * 0xFFFF_FFFF);
     }
 
     #[test]

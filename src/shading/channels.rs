@@ -5,6 +5,8 @@ use embedded_graphics::pixelcolor::{
     PixelColor, Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
 };
 
+use crate::target::StoredPixel;
+
 /// Colours made of channels that trirast interpolates, each in its own range (0..=31 for the
 /// red channel of `Rgb565`, 0..=3 for `Gray2`, 0..=1 for `BinaryColor`, ...): Gouraud shading,
 /// bilinear texture filtering and texture modulation work on these channels.
@@ -299,24 +301,17 @@ macro_rules! rgb565_channels {
 
             #[inline(always)]
             fn over(self, under: Self, opacity: u8) -> Self {
-                // Raw bits through the channels and `new` (a `const fn`), not through
-                // `IntoStorage` and `From<RawU16>`: embedded-graphics marks those conversions
-                // `#[inline]` nowhere, and at `opt-level = "s"` each became a call per pixel
-                // (Cortex-M0 translucent `big` 82.7 instructions a pixel against 45 at `3`).
-                // At `3` both ways fold to the bits themselves.
-                let raw = |c: Self| {
-                    (u16::from(c.r()) << 11) | (u16::from(c.g()) << 5) | u16::from(c.b())
-                };
-                let blended = over_565(raw(self), raw(under), opacity);
-                Self::new((blended >> 11) as u8, (blended >> 5) as u8, blended as u8)
+                // The raw bits as a `u16` frame stores them (not through embedded-graphics'
+                // `IntoStorage`, a call per pixel at `opt-level = "s"`: see `StoredPixel`).
+                let store = <u16 as StoredPixel<Self>>::store;
+                StoredPixel::load(over_565(store(self), store(under), opacity))
             }
 
             #[cfg(target_pointer_width = "64")]
             #[inline(always)]
             fn bilinear(corners: [Self; 4], x: u32, y: u32) -> Self {
-                use embedded_graphics::pixelcolor::{raw::RawU16, IntoStorage};
-                let raw = blend_565(corners.map(IntoStorage::into_storage), x, y);
-                RawU16::new(raw).into()
+                let store = <u16 as StoredPixel<Self>>::store;
+                StoredPixel::load(blend_565(corners.map(store), x, y))
             }
 
         }
