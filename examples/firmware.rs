@@ -97,6 +97,9 @@ fn main() -> ! {
         HEIGHT
     );
     for mode in Mode::ALL {
+        if !mode.built() {
+            continue;
+        }
         for scene in Scene::ALL {
             if let Some(only) = only {
                 if only.split_once(':') != Some((mode.name(), scene.name())) {
@@ -124,7 +127,7 @@ fn main() -> ! {
                 Padded(scene.name(), 8),
                 sum,
                 Padded(verdict, 0),
-                spent,
+                systick::Decimal(spent),
                 drawn,
                 triangles.len(),
                 systick::Ratio(spent, u64::from(drawn)),

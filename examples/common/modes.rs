@@ -99,7 +99,7 @@ impl Mode {
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
-    pub fn name(self) -> &'static str {
+    pub const fn name(self) -> &'static str {
         match self {
             Mode::Flat => "flat",
             Mode::Gouraud => "gouraud",
@@ -121,8 +121,48 @@ impl Mode {
         }
     }
 
+    /// Whether the firmware is built with this mode: every mode, or those `FW_MODES` (read at
+    /// build time, names separated by commas) lists. Fewer modes make a smaller firmware, for
+    /// `benches/firmware-size.sh`; a mode left out draws nothing and is compiled out.
+    pub const fn built(self) -> bool {
+        let Some(list) = option_env!("FW_MODES") else {
+            return true;
+        };
+        let (list, name) = (list.as_bytes(), self.name().as_bytes());
+        let mut start = 0;
+        while start <= list.len() {
+            let mut end = start;
+            while end < list.len() && list[end] != b',' {
+                end += 1;
+            }
+            if end - start == name.len() {
+                let mut k = 0;
+                while k < name.len() && list[start + k] == name[k] {
+                    k += 1;
+                }
+                if k == name.len() {
+                    return true;
+                }
+            }
+            start = end + 1;
+        }
+        false
+    }
+
+    /// Whether the firmware is built with a sub-pixel mode.
+    pub const fn any_subpixel_built() -> bool {
+        let mut k = 0;
+        while k < Self::ALL.len() {
+            if Self::ALL[k].built() && Self::ALL[k].subpixel() {
+                return true;
+            }
+            k += 1;
+        }
+        false
+    }
+
     /// Whether the mode draws sub-pixel triangles.
-    pub fn subpixel(self) -> bool {
+    pub const fn subpixel(self) -> bool {
         matches!(
             self,
             Mode::FlatSub
@@ -300,34 +340,63 @@ pub fn draw<const N: usize>(
     work: &mut Workspace<'_, N>,
 ) {
     match mode {
-        Mode::Flat => draw_flat(triangles, frame, whole),
-        Mode::Gouraud => draw_gouraud(triangles, frame, whole, false),
-        Mode::GouraudZ => draw_gouraud_z(triangles, frame, work.depths, whole),
-        Mode::TexNearest => draw_textured(triangles, frame, work.texture, Filter::Nearest, whole),
-        Mode::TexBilinear => draw_textured(triangles, frame, work.texture, Filter::Bilinear, whole),
-        Mode::Band => draw_bands(triangles, frame, work, |bands| bands),
-        Mode::BandCache => {
+        Mode::Flat if const { Mode::Flat.built() } => draw_flat(triangles, frame, whole),
+        Mode::Gouraud if const { Mode::Gouraud.built() } => {
+            draw_gouraud(triangles, frame, whole, false)
+        }
+        Mode::GouraudZ if const { Mode::GouraudZ.built() } => {
+            draw_gouraud_z(triangles, frame, work.depths, whole)
+        }
+        Mode::TexNearest if const { Mode::TexNearest.built() } => {
+            draw_textured(triangles, frame, work.texture, Filter::Nearest, whole)
+        }
+        Mode::TexBilinear if const { Mode::TexBilinear.built() } => {
+            draw_textured(triangles, frame, work.texture, Filter::Bilinear, whole)
+        }
+        Mode::Band if const { Mode::Band.built() } => {
+            draw_bands(triangles, frame, work, |bands| bands)
+        }
+        Mode::BandCache if const { Mode::BandCache.built() } => {
             let setups = work.setups;
             draw_bands(triangles, frame, work, |bands| {
                 bands.with_setup_cache(setups)
             })
         }
-        Mode::Translucent => draw_translucent(triangles, frame),
-        Mode::GouraudDither => draw_gouraud(triangles, frame, whole, true),
-        Mode::AntiAliased => draw_anti_aliased(triangles, frame, whole),
-        Mode::AntiAliasedSub => draw_anti_aliased(triangles, frame, subpixel_triangle),
-        Mode::FlatSub => draw_flat(triangles, frame, subpixel_triangle),
-        Mode::GouraudSub => draw_gouraud(triangles, frame, subpixel_triangle, false),
-        Mode::GouraudZSub => draw_gouraud_z(triangles, frame, work.depths, subpixel_triangle),
-        Mode::TexNearestSub => draw_textured(
+        Mode::Translucent if const { Mode::Translucent.built() } => {
+            draw_translucent(triangles, frame)
+        }
+        Mode::GouraudDither if const { Mode::GouraudDither.built() } => {
+            draw_gouraud(triangles, frame, whole, true)
+        }
+        Mode::AntiAliased if const { Mode::AntiAliased.built() } => {
+            draw_anti_aliased(triangles, frame, whole)
+        }
+        Mode::AntiAliasedSub if const { Mode::AntiAliasedSub.built() } => {
+            draw_anti_aliased(triangles, frame, subpixel_triangle)
+        }
+        Mode::FlatSub if const { Mode::FlatSub.built() } => {
+            draw_flat(triangles, frame, subpixel_triangle)
+        }
+        Mode::GouraudSub if const { Mode::GouraudSub.built() } => {
+            draw_gouraud(triangles, frame, subpixel_triangle, false)
+        }
+        Mode::GouraudZSub if const { Mode::GouraudZSub.built() } => {
+            draw_gouraud_z(triangles, frame, work.depths, subpixel_triangle)
+        }
+        Mode::TexNearestSub if const { Mode::TexNearestSub.built() } => draw_textured(
             triangles,
             frame,
             work.texture,
             Filter::Nearest,
             subpixel_triangle,
         ),
-        Mode::PerspNearest => draw_perspective(triangles, frame, work.texture, Filter::Nearest),
-        Mode::PerspBilinear => draw_perspective(triangles, frame, work.texture, Filter::Bilinear),
+        Mode::PerspNearest if const { Mode::PerspNearest.built() } => {
+            draw_perspective(triangles, frame, work.texture, Filter::Nearest)
+        }
+        Mode::PerspBilinear if const { Mode::PerspBilinear.built() } => {
+            draw_perspective(triangles, frame, work.texture, Filter::Bilinear)
+        }
+        _ => {}
     }
 }
 
@@ -347,7 +416,7 @@ pub fn subpixel_triangle(t: &SceneTriangle) -> SubPixelTriangle {
 
 /// Pixels `mode` covers in `triangles` (sub-pixel modes at their sub-pixel vertices).
 pub fn covered_pixels(mode: Mode, triangles: &[SceneTriangle]) -> u32 {
-    if !mode.subpixel() {
+    if !const { Mode::any_subpixel_built() } || !mode.subpixel() {
         return crate::scenes::covered_pixels(triangles);
     }
     let screen =

@@ -26,6 +26,21 @@ pub struct SceneTriangle {
 /// splitmix64: tiny, fast, and the same on every platform.
 pub struct Rng(pub u64);
 
+/// `x % m`, for `m > 0`: below 2^16 in 32-bit divisions by 16-bit digits, so that Cortex-M0
+/// firmware built with these scenes does not link the 64-bit library division for them. Out of
+/// line: one copy.
+#[inline(never)]
+fn remainder(x: u64, m: u64) -> u64 {
+    match u32::try_from(m) {
+        Ok(m @ 1..=0xFFFF) => {
+            let high = (x >> 32) as u32 % m;
+            let middle = ((high << 16) | (x >> 16) as u32 & 0xFFFF) % m;
+            u64::from(((middle << 16) | x as u32 & 0xFFFF) % m)
+        }
+        _ => x % m,
+    }
+}
+
 impl Rng {
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
@@ -38,7 +53,7 @@ impl Rng {
     /// Uniform in `lo..=hi` (up to a negligible bias).
     pub fn range(&mut self, lo: i32, hi: i32) -> i32 {
         let span = (i64::from(hi) - i64::from(lo) + 1) as u64;
-        (i64::from(lo) + (self.next_u64() % span) as i64) as i32
+        (i64::from(lo) + remainder(self.next_u64(), span) as i64) as i32
     }
 
     pub fn color(&mut self) -> Rgb565 {

@@ -55,7 +55,40 @@ pub struct Ratio(pub u64, pub u64);
 
 impl core::fmt::Display for Ratio {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        let hundredths = self.0 * 100 / self.1.max(1);
-        write!(f, "{}.{:02}", hundredths / 100, hundredths % 100)
+        let (hundredths, _) = div_rem(self.0 * 100, self.1.max(1));
+        let (whole, cents) = div_rem(hundredths, 100);
+        let cents = cents as u32;
+        write!(f, "{}.{}{}", Decimal(whole), cents / 10, cents % 10)
     }
+}
+
+/// A `u64` printed in decimal without the 64-bit library division, which `u64`'s own
+/// `Display` calls: on Cortex-M0 the harness would otherwise link it (about 1.1 KB) into a
+/// firmware whose modes do not.
+pub struct Decimal(pub u64);
+
+impl core::fmt::Display for Decimal {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let (rest, digit) = div_rem(self.0, 10);
+        if rest > 0 {
+            Decimal(rest).fmt(f)?;
+        }
+        core::fmt::Write::write_char(f, char::from(b'0' + digit as u8))
+    }
+}
+
+/// `(n / d, n % d)` by shift and subtract, for `d > 0`: see [`Decimal`]. Out of line: one copy.
+#[inline(never)]
+pub fn div_rem(n: u64, d: u64) -> (u64, u64) {
+    // The dividend's bits move out at the top as the quotient's move in at the bottom.
+    let (mut bits, mut rest) = (n, 0u64);
+    for _ in 0..64 {
+        rest = (rest << 1) | (bits >> 63);
+        bits <<= 1;
+        if rest >= d {
+            rest -= d;
+            bits |= 1;
+        }
+    }
+    (bits, rest)
 }

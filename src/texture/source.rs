@@ -91,10 +91,12 @@ pub struct NoTexture<C>(core::convert::Infallible, PhantomData<C>);
 impl<C: PixelColor> TexelSource for NoTexture<C> {
     type Color = C;
 
+    #[inline(always)]
     fn size(&self) -> Size {
         match self.0 {}
     }
 
+    #[inline(always)]
     fn texel(&self, _x: u32, _y: u32) -> C {
         match self.0 {}
     }
