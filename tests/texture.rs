@@ -115,10 +115,11 @@ fn random_case<C: ChannelColor<Channels = [u8; N]>, const N: usize>(
     reach: i32,
 ) -> Case<C> {
     let mut rng = Rng(seed);
-    let sizes = [1, 2, 3, 4, 5, 7, 8, 16];
+    // 131: a side of 32-bit nearest coordinates; 600: too large for them (`SCALED_SIDE`).
+    let sizes = [1, 2, 3, 4, 5, 7, 8, 16, 131, 600];
     let size = (
-        sizes[rng.range(0, 7) as usize],
-        sizes[rng.range(0, 7) as usize],
+        sizes[rng.range(0, 9) as usize],
+        sizes[rng.range(0, 9) as usize],
     );
     let tl = window.top_left;
     let (w, h) = (window.size.width as i32, window.size.height as i32);
@@ -153,28 +154,45 @@ fn random_case<C: ChannelColor<Channels = [u8; N]>, const N: usize>(
     }
 }
 
-/// Whether the documented exactness bound for nearest holds: (2w + h + 4) * 2 * area < 2^30.
+/// The longest texture side whose nearest runs step 32-bit coordinates with 22 fraction bits,
+/// started up to the run's length in 2^-22 texel above the 64-bit ones (the documented bound).
+const SCALED_SIDE: u32 = 512;
+
+/// How far above the exact coordinate, in 2^-46 texel, nearest may sample (documented): the
+/// planes' rounding, (2w + h + 4) units, and for textures up to `SCALED_SIDE` a side the 32-bit
+/// runs' lift, up to a window's width in 2^-22 texel.
+fn nearest_slack(case: &Case<impl Sized>) -> i128 {
+    let (w, h) = (
+        i128::from(case.window.size.width),
+        i128::from(case.window.size.height),
+    );
+    let scaled = if case.size.0.max(case.size.1) <= SCALED_SIDE {
+        w << 24
+    } else {
+        0
+    };
+    2 * w + h + 4 + scaled
+}
+
+/// Whether the documented exactness bound for nearest holds: slack * 2 * area < 2^30 (the
+/// slack below the distance from any exact coordinate to a texel boundary it is not on).
 fn nearest_is_exact(case: &Case<impl Sized>) -> bool {
     let area = Triangle {
         vertices: case.vertices,
     }
     .doubled_signed_area()
     .unsigned_abs();
-    let (w, h) = (
-        u128::from(case.window.size.width),
-        u128::from(case.window.size.height),
-    );
-    (2 * w + h + 4) * area < 1 << 30
+    nearest_slack(case) as u128 * area < 1 << 30
 }
 
 /// Checks nearest sampling: the texel at floor(exact + 1/2) on both axes, exactly when the
-/// bound holds, else allowing the coordinate to be up to (2w + h + 4) * 2^-46 texel high.
+/// bound holds, else allowing the coordinate to be up to the slack high.
 fn check_nearest<C, const N: usize>(case: &Case<C>) -> Result<(), TestCaseError>
 where
     C: ChannelColor<Channels = [u8; N]> + core::fmt::Debug,
 {
     let exact = nearest_is_exact(case);
-    let slack = 2 * i128::from(case.window.size.width) + i128::from(case.window.size.height) + 4;
+    let slack = nearest_slack(case);
     let texel = |t: i128, d: i128, size: u32| {
         // floor(t / d + 1/2), or the texel past a boundary within the slack.
         let low = (2 * t + d).div_euclid(2 * d);

@@ -16,8 +16,8 @@ use crate::{
     interpolate::{AreaMemo, PerspectivePlanes, Planes, TrackedPlanes},
     setup::lane::mul_small,
     texture::{
-        Axis, Direct, Filter, Narrow, Perspective, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
-        RAW_SHIFT,
+        Axis, Direct, Filter, Narrow, Perspective, Scaled, TexelSource, Wrap, Wrapped,
+        COORDINATE_BITS, RAW_SHIFT,
     },
 };
 
@@ -28,13 +28,18 @@ use crate::{
 /// they are interpolated with 46 fraction bits from plane equations set up once per triangle,
 /// and stepped along each span by one addition per coordinate: no division per pixel.
 ///
-/// [`Filter::Nearest`] picks exactly the texel containing the exact (rational) interpolated
-/// coordinate, rounding half up, for every triangle drawn into a window up to 2048 x 2048
-/// whose area is below 2^18 pixels (a triangle covering a 480 x 320 screen, say; precisely,
-/// while `(2 * width + height + 4) * 2 * area < 2^30`); beyond, the coordinate used is within
-/// 2^-30 texel of exact. [`Filter::Bilinear`] is within one level of the exact blend in every
-/// channel. Power-of-two textures repeat by masking; other sizes repeat with one division per
-/// span.
+/// [`Filter::Nearest`] picks the texel containing a coordinate at or above the exact
+/// (rational) interpolated one, rounding half up, and less than 2^-12 texel above it: for
+/// textures up to 512 texels a side, spans inside the texture step 32-bit coordinates with 22
+/// fraction bits, started up to the span's length in 2^-22 texel above the 64-bit ones (spans
+/// under 1,024 pixels; longer ones, and larger textures, are exact as below). So the texel is
+/// the exact one unless the exact coordinate lies that close below a texel boundary: ties,
+/// integer translations and the identity mapping are exact. The 64-bit coordinates alone pick
+/// exactly the texel containing the exact coordinate for every triangle drawn into a window up
+/// to 2048 x 2048 whose area is below 2^18 pixels (precisely, while
+/// `(2 * width + height + 4) * 2 * area < 2^30`); beyond, within 2^-30 texel of exact.
+/// [`Filter::Bilinear`] is within one level of the exact blend in every channel. Power-of-two
+/// textures repeat by masking; other sizes repeat with one division per span.
 ///
 /// [`TextureStyle::with_modulation`] multiplies the texels by colours interpolated between the
 /// vertices, for lit or tinted textures.
@@ -475,6 +480,10 @@ struct TexturedPainter<'a, T, const M: usize> {
     limits: [i64; 2],
     /// The same in raw 16.16, for perspective sub-spans.
     sub_span_limits: [u32; 2],
+    /// Nearest sampling of a texture up to [`Scaled::SIDE`] texels a side: runs inside it
+    /// step [`Scaled`] coordinates, by these steps.
+    scaled: bool,
+    scaled_steps: [u32; 2],
 }
 
 impl<'a, T, const M: usize> TexturedPainter<'a, T, M>
@@ -482,7 +491,7 @@ where
     T: TexelSource + Copy,
     T::Color: ChannelColor<Channels = [u8; M]>,
 {
-    #[inline]
+    #[inline(always)]
     fn new(
         style: &TextureStyle<T>,
         coordinates: Planes<2, COORDINATE_BITS>,
@@ -509,6 +518,15 @@ where
             du: u.step(du),
             dv: v.step(dv),
         };
+        let scaled = !bilinear && size.width.max(size.height) <= Scaled::SIDE;
+        // Nearest runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that
+        // far inside (others need no addressing just short of the edge).
+        let margin = if scaled {
+            1 << (COORDINATE_BITS - 12)
+        } else {
+            0
+        };
+        let reach = |side: u32| reach(side) - margin;
         Self {
             texture,
             coordinates: TrackedPlanes::new(coordinates),
@@ -519,6 +537,8 @@ where
             limits: [reach(size.width), reach(size.height)],
             sub_span_limits: [reach(size.width), reach(size.height)]
                 .map(|limit| (limit >> RAW_SHIFT) as u32),
+            scaled,
+            scaled_steps: [Scaled.step(du), Scaled.step(dv)],
         }
     }
 
@@ -583,33 +603,6 @@ where
             let (limit, start) = (self.limits[k] as u64, start[k] as u64);
             start < limit && across[k].is_some_and(|d| start.wrapping_add(d as u64) < limit)
         })
-    }
-
-    /// Shades `run`, which stays inside the texture, from coordinates `start` stepping by
-    /// `steps`, both in `axis`'s terms, with this filter's and modulation's loop.
-    #[inline(always)]
-    #[allow(clippy::too_many_arguments)]
-    fn shade_inside<A, D>(
-        &self,
-        axis: A,
-        steps: (A::Coord, A::Coord),
-        start: (A::Coord, A::Coord),
-        tint: Option<[u32; M]>,
-        run: Span,
-        offset: Point,
-        target: &mut D,
-    ) -> Result<(), D::Error>
-    where
-        A: Axis,
-        D: DrawTarget<Color = T::Color>,
-    {
-        let (pair, s, t, o) = ((axis, axis), start, tint, offset);
-        match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.shade::<_, _, NO, NO>(pair, steps, s, t, run, o, target),
-            (true, false) => self.shade::<_, _, YES, NO>(pair, steps, s, t, run, o, target),
-            (false, true) => self.shade::<_, _, NO, YES>(pair, steps, s, t, run, o, target),
-            (true, true) => self.shade::<_, _, YES, YES>(pair, steps, s, t, run, o, target),
-        }
     }
 
     /// Shades a run that leaves the texture: a loop per filter, each serving both wrap modes
@@ -836,12 +829,33 @@ where
         let start = planes.at_exact(run.x, run.y);
         let steps = planes.dx;
         let across = steps.map(|step| across(run.len - 1, step));
-        if self.inside(start, across) {
-            let steps = (steps[0], steps[1]);
-            let start = (start[0], start[1]);
-            self.shade_inside(Direct, steps, start, None, run, offset, target)
+        if !self.inside(start, across) {
+            return self.shade_addressed(run, start, steps, None, offset, target);
+        }
+        let o = offset;
+        // Nearest in 32 bits, within 2^-12 texel: each coordinate and step rounded down loses
+        // less than a unit of `Scaled` (2^-24 texel) a pixel, so starting `len` units up
+        // keeps every pixel's coordinate at or above its 64-bit value (itself at or above the
+        // exact one, by the lift of the planes) and less than `len` units over it.
+        if self.scaled && run.len < 1 << (Scaled::BITS - 12) {
+            let first = start.map(|c| Scaled.coord(c).wrapping_add(run.len));
+            let steps = (self.scaled_steps[0], self.scaled_steps[1]);
+            let (start, pair) = ((first[0], first[1]), (Scaled, Scaled));
+            return if self.tint.is_some() {
+                self.shade::<_, _, NO, YES>(pair, steps, start, None, run, o, target)
+            } else {
+                self.shade::<_, _, NO, NO>(pair, steps, start, None, run, o, target)
+            };
+        }
+        if !self.bilinear {
+            // Textures over `Scaled::SIDE` texels a side.
+            return self.shade_addressed(run, start, steps, None, offset, target);
+        }
+        let (steps, start, pair) = ((steps[0], steps[1]), (start[0], start[1]), (Direct, Direct));
+        if self.tint.is_some() {
+            self.shade::<_, _, YES, YES>(pair, steps, start, None, run, o, target)
         } else {
-            self.shade_addressed(run, start, steps, None, offset, target)
+            self.shade::<_, _, YES, NO>(pair, steps, start, None, run, o, target)
         }
     }
 }
