@@ -16,8 +16,8 @@ use crate::{
     interpolate::{AreaMemo, PerspectivePlanes, Planes, TrackedPlanes},
     setup::lane::mul_small,
     texture::{
-        Axis, Direct, Filter, Narrow, Perspective, Scaled, TexelSource, Wrap, Wrapped,
-        COORDINATE_BITS, RAW_SHIFT,
+        Axis, Filter, Narrow, Perspective, Scaled, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
+        RAW_SHIFT,
     },
 };
 
@@ -38,8 +38,9 @@ use crate::{
 /// exactly the texel containing the exact coordinate for every triangle drawn into a window up
 /// to 2048 x 2048 whose area is below 2^18 pixels (precisely, while
 /// `(2 * width + height + 4) * 2 * area < 2^30`); beyond, within 2^-30 texel of exact.
-/// [`Filter::Bilinear`] is within one level of the exact blend in every channel. Power-of-two
-/// textures repeat by masking; other sizes repeat with one division per span.
+/// [`Filter::Bilinear`] (whose coordinates are stepped alike) is within one level of the exact
+/// blend in every channel. Power-of-two textures repeat by masking; other sizes repeat with one
+/// division per span.
 ///
 /// [`TextureStyle::with_modulation`] multiplies the texels by colours interpolated between the
 /// vertices, for lit or tinted textures.
@@ -518,7 +519,7 @@ where
             du: u.step(du),
             dv: v.step(dv),
         };
-        let scaled = !bilinear && size.width.max(size.height) <= Scaled::SIDE;
+        let scaled = size.width.max(size.height) <= Scaled::SIDE;
         // Nearest runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that
         // far inside (others need no addressing just short of the edge).
         let margin = if scaled {
@@ -526,7 +527,8 @@ where
         } else {
             0
         };
-        let reach = |side: u32| reach(side) - margin;
+        // Not below zero: bilinear reaches nothing inside a one-texel side.
+        let reach = |side: u32| (reach(side) - margin).max(0);
         Self {
             texture,
             coordinates: TrackedPlanes::new(coordinates),
@@ -833,25 +835,48 @@ where
             return self.shade_addressed(run, start, steps, None, offset, target);
         }
         let o = offset;
-        // Nearest in 32 bits, within 2^-12 texel: each coordinate and step rounded down loses
-        // less than a unit of `Scaled` (2^-24 texel) a pixel, so starting `len` units up
-        // keeps every pixel's coordinate at or above its 64-bit value (itself at or above the
-        // exact one, by the lift of the planes) and less than `len` units over it.
+        // In 32 bits, within 2^-12 texel: each coordinate and step rounded down loses less
+        // than a unit of `Scaled` (2^-22 texel) a pixel, so starting `len` units up keeps
+        // every pixel's coordinate at or above its 64-bit value (itself at or above the exact
+        // one, by the lift of the planes) and at most `len` units over it.
         if self.scaled && run.len < 1 << (Scaled::BITS - 12) {
             let first = start.map(|c| Scaled.coord(c).wrapping_add(run.len));
             let steps = (self.scaled_steps[0], self.scaled_steps[1]);
             let (start, pair) = ((first[0], first[1]), (Scaled, Scaled));
+            if self.bilinear {
+                return self.paint_bilinear(run, start, steps, offset, target);
+            }
             return if self.tint.is_some() {
                 self.shade::<_, _, NO, YES>(pair, steps, start, None, run, o, target)
             } else {
                 self.shade::<_, _, NO, NO>(pair, steps, start, None, run, o, target)
             };
         }
-        if !self.bilinear {
-            // Textures over `Scaled::SIDE` texels a side.
-            return self.shade_addressed(run, start, steps, None, offset, target);
-        }
-        let (steps, start, pair) = ((steps[0], steps[1]), (start[0], start[1]), (Direct, Direct));
+        // Textures over `Scaled::SIDE` texels a side, runs of 1,024 pixels and more.
+        self.shade_addressed(run, start, steps, None, offset, target)
+    }
+}
+
+impl<T, const M: usize> TexturedPainter<'_, T, M>
+where
+    T: TexelSource + Copy,
+    T::Color: ChannelColor<Channels = [u8; M]>,
+{
+    /// Paints `run`, inside the texture, bilinear from [`Scaled`] coordinates `start` stepping
+    /// by `steps`. Out of line: the nearest loops keep their registers.
+    #[inline(never)]
+    fn paint_bilinear<D>(
+        &self,
+        run: Span,
+        start: (u32, u32),
+        steps: (u32, u32),
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        let (pair, o) = ((Scaled, Scaled), offset);
         if self.tint.is_some() {
             self.shade::<_, _, YES, YES>(pair, steps, start, None, run, o, target)
         } else {

@@ -33,11 +33,14 @@ pub(crate) trait Axis: Copy {
     fn linear(self, coord: Self::Coord) -> (u32, u32, u32);
 }
 
-/// Addressing of coordinates known to stay inside the texture (the caller checks each span's
-/// ends): texels are the integer parts, with no wrapping or clamping at all.
+/// Addressing of 64-bit coordinates known to stay inside the texture: texels are the integer
+/// parts, with no wrapping or clamping at all. The reference the 32-bit addressings are tested
+/// against (spans inside the texture step [`Scaled`] or [`Narrow`] coordinates).
+#[cfg(test)]
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct Direct;
 
+#[cfg(test)]
 impl Axis for Direct {
     type Coord = i64;
 
@@ -74,7 +77,7 @@ impl Axis for Direct {
 /// Addressing of coordinates known to stay inside the texture, carried in 16.16 (`u32`): for
 /// perspective sub-spans, whose coordinates and steps are raw 16.16 already. On 32-bit cores
 /// each coordinate is one register instead of two, so the span loop keeps them all in
-/// registers; the texels are those [`Direct`] gives the same coordinates.
+/// registers; the texels are those 64-bit coordinates give (tested).
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct Narrow;
 
@@ -119,7 +122,7 @@ impl Axis for Narrow {
 /// 21.4 -> 19.8 on M4F). A constant shift: a variable one (as many fraction bits as each
 /// texture leaves) kept a register and a copy a pixel on Cortex-M0, whose shifts overwrite
 /// their operand. The caller starts each run from the
-/// [`Direct`] coordinates rounded down and lifted so that it never falls below them (see
+/// 64-bit coordinates rounded down and lifted so that it never falls below them (see
 /// `TexturedPainter::paint_linear`).
 #[derive(Copy, Clone, Debug)]
 pub(crate) struct Scaled;
@@ -338,6 +341,39 @@ mod tests {
                 assert_eq!(Narrow.linear(narrow), Direct.linear(direct));
                 narrow = Narrow.advance(narrow, narrow_step);
                 direct = Direct.advance(direct, direct_step);
+            }
+        }
+    }
+
+    /// Scaled coordinates, started from 64-bit ones rounded down and lifted by the run's
+    /// length, stay at or above the 64-bit ones stepped alike and at most the length (in
+    /// units of 2^-22 texel) over them, for any start inside a 512-texel side and any step
+    /// that keeps the run inside: the bound `TexturedPainter::paint_linear` documents.
+    #[test]
+    fn scaled_coordinates_stay_within_their_lift() {
+        let mut rng = crate::test_rng::XorShift(0x5CA1_ED00_D1CE_0001);
+        let side = i64::from(Scaled::SIDE) << COORDINATE_BITS;
+        let unit = 1i128 << (COORDINATE_BITS - Scaled::BITS);
+        for _ in 0..20_000 {
+            let len = (rng.next_u64() % 1023) as u32 + 1;
+            let start = (rng.next_u64() % side as u64) as i64;
+            // Steps of either sign up to a texel and a half a pixel, kept inside the side.
+            let step = (rng.next_u64() % (3 << (COORDINATE_BITS - 1))) as i64
+                - (3 << (COORDINATE_BITS - 2));
+            let end = i128::from(start) + i128::from(step) * i128::from(len - 1);
+            if !(0..i128::from(side)).contains(&end) {
+                continue;
+            }
+            let mut scaled = Scaled.coord(start).wrapping_add(len);
+            let scaled_step = Scaled.step(step);
+            for k in 0..i128::from(len) {
+                let direct = i128::from(start) + k * i128::from(step);
+                let over = i128::from(scaled) * unit - direct;
+                assert!(
+                    (0..=i128::from(len) * unit).contains(&over),
+                    "{start} {step} {len} {k}"
+                );
+                scaled = Scaled.advance(scaled, scaled_step);
             }
         }
     }

@@ -24,7 +24,7 @@
 mod address;
 mod source;
 
-pub(crate) use address::{Axis, Direct, Narrow, Scaled, Wrapped, COORDINATE_BITS, RAW_SHIFT};
+pub(crate) use address::{Axis, Narrow, Scaled, Wrapped, COORDINATE_BITS, RAW_SHIFT};
 pub use source::{
     ImageTexels, NoTexture, RawTexels, TexelByteOrder, TexelSource, Texels, MAX_TEXTURE_SIDE,
 };
