@@ -679,10 +679,25 @@ where
         match (self.bilinear, self.tint.is_some()) {
             (false, false) => self.paint_sub_spans::<_, NO, NO>(p, run, o, target),
             (false, true) => self.paint_sub_spans::<_, NO, YES>(p, run, o, target),
-            // Bilinear, whose pixels cost ten times more: one walk, modulation chosen per
-            // sub-span.
-            (true, _) => self.paint_sub_spans::<_, YES, EITHER>(p, run, o, target),
+            (true, _) => self.paint_perspective_bilinear(p, run, o, target),
         }
+    }
+
+    /// [`TexturedPainter::paint_perspective`] bilinear, whose pixels cost ten times more: one
+    /// walk, modulation chosen per sub-span. Out of line, so that the nearest walks keep their
+    /// registers.
+    #[inline(never)]
+    fn paint_perspective_bilinear<D>(
+        &self,
+        planes: &PerspectivePlanes<3, 2>,
+        run: Span,
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = T::Color>,
+    {
+        self.paint_sub_spans::<_, YES, EITHER>(planes, run, offset, target)
     }
 
     /// [`TexturedPainter::paint_perspective`] with one filter and modulation.
