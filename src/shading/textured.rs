@@ -481,8 +481,8 @@ struct TexturedPainter<'a, T, const M: usize> {
     limits: [i64; 2],
     /// The same in raw 16.16, for perspective sub-spans.
     sub_span_limits: [u32; 2],
-    /// Nearest sampling of a texture up to [`Scaled::SIDE`] texels a side: runs inside it
-    /// step [`Scaled`] coordinates, by these steps.
+    /// A texture up to [`Scaled::SIDE`] texels a side: runs inside it step [`Scaled`]
+    /// coordinates, by these steps.
     scaled: bool,
     scaled_steps: [u32; 2],
 }
@@ -520,8 +520,8 @@ where
             dv: v.step(dv),
         };
         let scaled = size.width.max(size.height) <= Scaled::SIDE;
-        // Nearest runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that
-        // far inside (others need no addressing just short of the edge).
+        // Runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that far
+        // inside (others need no addressing just short of the edge).
         let margin = if scaled {
             1 << (COORDINATE_BITS - 12)
         } else {
@@ -835,7 +835,8 @@ where
     T::Color: ChannelColor<Channels = [u8; M]>,
 {
     /// Paints `run` with coordinates stepped linearly (affine mapping). One out-of-line copy
-    /// per target of the four span loops inside the texture.
+    /// per target of the two nearest span loops inside the texture; the bilinear ones are
+    /// [`TexturedPainter::paint_bilinear`]'s.
     #[inline(never)]
     fn paint_linear<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
