@@ -391,9 +391,15 @@ where
 const PACKED_RUN: u32 = 256;
 
 /// Up to four 16-bit lanes, two to a 32-bit word: lanes 0 and 1 in the first word (lane 0 in
-/// the upper half), 2 and 3 in the second. A carry or borrow between the two lanes of a word
-/// cancels out as long as each lane's value stays within its 16 bits. [`PackedShader`] steps
-/// both words as one 64-bit integer ([`Lanes::wide`]).
+/// the lower half), 2 and 3 in the second (lane 2 in the upper half). A carry or borrow between
+/// the two lanes of a word cancels out as long as each lane's value stays within its 16 bits.
+/// [`PackedShader`] steps both words as one 64-bit integer ([`Lanes::wide`]).
+///
+/// For `Rgb565` that puts red's level bits at bits 11 to 15, where the pixel has them (two
+/// shifts clear its fraction, no mask), and blue's at the top of the second word (one shift):
+/// with red in the upper half the Cortex-M0 span loop kept a mask in a register and reloaded
+/// both of the step's words every pixel (measured on `big`: 14.5 -> 13 instructions a pixel in
+/// the loop; Gouraud 19.43 -> 18.19, Gouraud + depth -3.7%, bands -3.3%, M4F translucent -4%).
 #[derive(Copy, Clone, Debug, Default)]
 struct Lanes(u32, u32);
 
@@ -411,7 +417,7 @@ impl Lanes {
     /// Where lane `k` starts in its word.
     #[inline(always)]
     fn position(k: usize) -> u32 {
-        if k & 1 == 0 {
+        if k == 1 || k == 2 {
             16
         } else {
             0
