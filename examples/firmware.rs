@@ -11,7 +11,10 @@
 //! ../shared/embedded/xcargo thumbv6m-none-eabi run --profile measure --example firmware --features firmware
 //! ```
 //!
-//! The `measure` profile (one codegen unit) is the one the published figures use.
+//! The `measure` profile (one codegen unit) is the one the published figures use. Set at build
+//! time, `FW_ONLY=mode:scene` renders one combination (for profiling) and `FW_MODES=flat,gouraud`
+//! builds in only the modes named (the rest compiled out: a smaller firmware, as
+//! `benches/firmware-size.sh` measures for the six modes its 64 KB budget was set for).
 //! Instruction counts come from SysTick under `qemu -icount shift=3`, where one tick is five
 //! instructions: exact to five instructions per measured frame, and the same on every run.
 //! Only drawing is counted: the scene's triangles are generated before.
