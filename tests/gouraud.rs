@@ -10,7 +10,10 @@ use common::{
     Offset, Recorder, Rng, Rule,
 };
 use embedded_graphics::{
-    pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb888, RgbColor},
+    pixelcolor::{
+        Bgr555, Bgr565, Bgr666, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb555, Rgb565,
+        Rgb666, Rgb888, RgbColor,
+    },
     prelude::*,
     primitives::Rectangle,
 };
@@ -113,6 +116,21 @@ proptest! {
                                         inclusive in any::<bool>()) {
         let rule = if inclusive { Rule::Inclusive } else { Rule::TopLeft };
         check_gouraud(v, colors, window, rule, 1)?;
+    }
+
+    /// The other colour types whose channels are stepped packed, two to a word (each lane's
+    /// place in its word is its own): every channel within one level of exact.
+    #[test]
+    fn packed_colour_types_within_one_level_of_exact(v in triangle(), c in [any::<[u8; 3]>(), any::<[u8; 3]>(), any::<[u8; 3]>()],
+                                                     window in window(), kind in 0..5u8) {
+        let fit = |max: [u8; 3]| c.map(|c| [0, 1, 2].map(|k| c[k] % (max[k] + 1)));
+        match kind {
+            0 => check_gouraud(v, fit([63; 3]).map(|[r, g, b]| Rgb666::new(r, g, b)), window, Rule::TopLeft, 1)?,
+            1 => check_gouraud(v, fit([63; 3]).map(|[r, g, b]| Bgr666::new(r, g, b)), window, Rule::TopLeft, 1)?,
+            2 => check_gouraud(v, fit([31; 3]).map(|[r, g, b]| Rgb555::new(r, g, b)), window, Rule::TopLeft, 1)?,
+            3 => check_gouraud(v, fit([31; 3]).map(|[r, g, b]| Bgr555::new(r, g, b)), window, Rule::TopLeft, 1)?,
+            _ => check_gouraud(v, fit([31, 63, 31]).map(|[r, g, b]| Bgr565::new(r, g, b)), window, Rule::TopLeft, 1)?,
+        }
     }
 
     /// One colour at all vertices: exactly that colour everywhere, for every colour type.
