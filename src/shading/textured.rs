@@ -520,15 +520,16 @@ where
             dv: v.step(dv),
         };
         let scaled = size.width.max(size.height) <= Scaled::SIDE;
-        // Runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that far
-        // inside (others need no addressing just short of the edge).
+        // Affine runs in `Scaled` coordinates, lifted by less than 2^-12 texel, must end that
+        // far inside (others need no addressing just short of the edge). Perspective
+        // sub-spans step unlifted 16.16 coordinates: their limits keep the whole reach.
         let margin = if scaled {
             1 << (COORDINATE_BITS - 12)
         } else {
             0
         };
         // Not below zero: bilinear reaches nothing inside a one-texel side.
-        let reach = |side: u32| (reach(side) - margin).max(0);
+        let affine_reach = |side: u32| (reach(side) - margin).max(0);
         Self {
             texture,
             coordinates: TrackedPlanes::new(coordinates),
@@ -536,7 +537,7 @@ where
             tint,
             bilinear,
             addressing,
-            limits: [reach(size.width), reach(size.height)],
+            limits: [affine_reach(size.width), affine_reach(size.height)],
             sub_span_limits: [reach(size.width), reach(size.height)]
                 .map(|limit| (limit >> RAW_SHIFT) as u32),
             scaled,
