@@ -185,7 +185,8 @@ where
 
     /// `fill_contiguous` for areas of several rows (a band copied to the screen, say) or partly
     /// outside. Out of line, taking `colors` by value: the span loop's colour state is not
-    /// pinned to memory. Areas inside the image are copied row by row; the rest goes to
+    /// pinned to memory. Areas inside the image are copied row by row (as one run when the
+    /// rows are as wide as the image); the rest goes to
     /// [`Self::fill_contiguous_clipped`], type-erased.
     #[inline(never)]
     fn fill_contiguous_rows<I: Iterator<Item = C>>(&mut self, area: &Rectangle, mut colors: I) {
@@ -196,20 +197,29 @@ where
                     && (window.x1 - window.x0) as u64 == u64::from(area.size.width)
                     && (window.y1 - window.y0) as u64 == u64::from(area.size.height) =>
             {
-                for y in window.y0..window.y1 {
-                    let start = y * self.width;
-                    let Some(row) = self.pixels.get_mut(start + window.x0..start + window.x1)
-                    else {
+                // Rows as wide as the image (a band copied to the screen) lie end to end: one
+                // run, without a row loop's set-up per row.
+                let (runs, run_len) = if window.x1 - window.x0 == self.width {
+                    (
+                        window.y0..window.y0 + 1,
+                        self.width * (window.y1 - window.y0),
+                    )
+                } else {
+                    (window.y0..window.y1, window.x1 - window.x0)
+                };
+                for y in runs {
+                    let start = y * self.width + window.x0;
+                    let Some(run) = self.pixels.get_mut(start..start + run_len) else {
                         return;
                     };
                     let mut written = 0;
-                    row.iter_mut()
+                    run.iter_mut()
                         .zip(colors.by_ref())
                         .for_each(|(dst, color)| {
                             *dst = S::store(color);
                             written += 1;
                         });
-                    if written < row.len() {
+                    if written < run.len() {
                         return;
                     }
                 }
@@ -685,6 +695,26 @@ mod tests {
                 }
             }
             assert_eq!(px.map(|c| c.luma()), want, "row at ({x}, {y}), {w} long");
+        }
+    }
+
+    #[test]
+    fn fill_contiguous_fills_every_area_inside_in_row_major_order() {
+        // Every area inside a 5x4 image, as wide as the image (one run) or narrower (row by
+        // row): pixel k of the area, row-major, gets colour k + 1, and nothing else changes.
+        for (x, y) in (0..5).flat_map(|x| (0..4).map(move |y| (x, y))) {
+            for (w, h) in (1..=5 - x).flat_map(|w| (1..=4 - y).map(move |h| (w, h))) {
+                let mut px = [gray(0); 5 * 4];
+                let mut fb = Framebuffer::new(&mut px, 5, 4).unwrap();
+                let area = Rectangle::new(Point::new(x, y), Size::new(w as u32, h as u32));
+                fb.fill_contiguous(&area, (1..=(w * h) as u8).map(gray))
+                    .unwrap();
+                let mut want = [0u8; 5 * 4];
+                for k in 0..w * h {
+                    want[((y + k / w) * 5 + x + k % w) as usize] = k as u8 + 1;
+                }
+                assert_eq!(px.map(|c| c.luma()), want, "{w}x{h} at ({x}, {y})");
+            }
         }
     }
 
