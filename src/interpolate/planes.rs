@@ -1084,11 +1084,30 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         }
     }
 
-    /// Moves the tracked values to pixel `(x, y)`. Out of line: once per span, and one copy
-    /// serves every loop that starts spans; in place, so that a span's start costs a few
-    /// loads, additions and stores per value.
-    #[inline(never)]
+    /// Moves the tracked values to pixel `(x, y)`, in place, so that a span's start costs a
+    /// few loads, additions and stores per value. A single plane (the depth pass's, once per
+    /// span before the painter's own move) moves inline: out of line its call and frame cost
+    /// more than the move (measured on Cortex-M4F: Gouraud + depth -2.0% per `small` and
+    /// -2.9% per `mesh` triangle inline, M0 -0.7% and -0.9%, for 0.3 KB of every-mode flash).
+    #[inline(always)]
     fn track(&self, x: i32, y: i32) {
+        if N == 1 {
+            self.move_to(x, y);
+        } else {
+            self.move_to_out_of_line(x, y);
+        }
+    }
+
+    /// [`TrackedPlanes::move_to`] out of line: once per span, and one copy serves every loop
+    /// that starts spans.
+    #[inline(never)]
+    fn move_to_out_of_line(&self, x: i32, y: i32) {
+        self.move_to(x, y);
+    }
+
+    /// See [`TrackedPlanes::track`].
+    #[inline(always)]
+    fn move_to(&self, x: i32, y: i32) {
         let (last_x, last_y) = self.last.get();
         self.last.set((x, y));
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
