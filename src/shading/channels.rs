@@ -369,6 +369,7 @@ impl ChannelColor for BinaryColor {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use embedded_graphics::pixelcolor::raw::RawU16;
 
     #[test]
     fn division_by_255_rounds_to_nearest() {
@@ -430,6 +431,27 @@ mod tests {
             let (s, d, opacity) = (r as u16, (r >> 16) as u16, (r >> 32) as u8);
             check::<Rgb565>(s, d, opacity);
             check::<Bgr565>(s, d, opacity);
+        }
+    }
+
+    #[test]
+    fn rgb565_raw_blend_equals_channel_blend_for_every_field_and_opacity() {
+        // Every pair of values of each field at every opacity: `v` runs over the 6-bit field's
+        // values, its low 5 bits and their complement over the 5-bit ones (fields blend
+        // apart, so each is checked whatever the others hold).
+        let color = |v: u16| ((v & 31) << 11) | (v << 5) | (!v & 31);
+        for opacity in 0..=u8::MAX {
+            for (s, d) in (0..64).flat_map(|s| (0..64).map(move |d| (s, d))) {
+                let (s, d) = (
+                    Rgb565::from(RawU16::new(color(s))),
+                    Rgb565::from(RawU16::new(color(d))),
+                );
+                assert_eq!(
+                    s.over(d, opacity),
+                    over_channels(s, d, opacity),
+                    "{s:?} over {d:?} at {opacity}"
+                );
+            }
         }
     }
 
