@@ -1,5 +1,7 @@
-//! Band rendering gives, for any band height, the very image full-frame rendering gives; each
-//! band reaches the display as one `fill_contiguous` call; misuse is reported.
+//! Band rendering gives, for any band height, the very image full-frame rendering gives
+//! (whole-pixel and sub-pixel scenes, vertices anywhere in their types' ranges, with and
+//! without kept set-ups); each band reaches the display as one `fill_contiguous` call; misuse
+//! is reported.
 
 mod common;
 
@@ -7,13 +9,14 @@ use common::{CountingTarget, Offset, Rng};
 use embedded_graphics::{
     pixelcolor::{BinaryColor, Rgb565},
     prelude::*,
-    primitives::Rectangle,
+    primitives::{Rectangle, StyledDrawable},
 };
-use fixed::types::I16F16;
+use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
     band::{BandError, Bands, Scene, SceneStyle, SetupCache, SetupSlot},
     depth::{DepthBuffer, DepthTarget, DepthTest},
+    geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, Texels, Wrap},
     Error, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
@@ -30,31 +33,81 @@ fn color(rng: &mut Rng) -> Rgb565 {
     )
 }
 
+/// A triangle type the scenes hold, made from vertex coordinates in its own units.
+trait SceneShape:
+    Shape
+    + Copy
+    + Primitive
+    + StyledDrawable<FlatStyle<Rgb565>, Color = Rgb565, Output = ()>
+    + StyledDrawable<GouraudStyle<Rgb565>, Color = Rgb565, Output = ()>
+    + for<'a> StyledDrawable<TextureStyle<Texels<'a, Rgb565>>, Color = Rgb565, Output = ()>
+{
+    /// Units per pixel.
+    const UNIT: i32;
+
+    fn from_units(v: [(i32, i32); 3]) -> Self;
+}
+
+impl SceneShape for Triangle {
+    const UNIT: i32 = 1;
+
+    fn from_units(v: [(i32, i32); 3]) -> Self {
+        Triangle {
+            vertices: v.map(|(x, y)| Point::new(x, y)),
+        }
+    }
+}
+
+impl SceneShape for SubPixelTriangle {
+    const UNIT: i32 = 256;
+
+    fn from_units(v: [(i32, i32); 3]) -> Self {
+        let [a, b, c] = v.map(|(x, y)| SubPoint::new(I24F8::from_bits(x), I24F8::from_bits(y)));
+        SubPixelTriangle::new(a, b, c)
+    }
+}
+
+type TestScene<'a, G> = Scene<'a, Rgb565, 64, Texels<'a, Rgb565>, G>;
+
 /// A random scene of 1 to 40 triangles of every kind, some depth-tested, some reaching far off
-/// screen, some degenerate.
-fn random_scene<'a>(
+/// screen (one coordinate in five at either end of the `i32` range or of the fast walks'),
+/// some degenerate.
+fn random_scene<'a, G: SceneShape>(
     rng: &mut Rng,
     texture: Texels<'a, Rgb565>,
     test: DepthTest,
     origin: Point,
-) -> Scene<'a, Rgb565, 64> {
+) -> TestScene<'a, G> {
     let mut scene = Scene::new(Rectangle::new(origin, Size::new(W, H))).with_depth_test(test);
+    let far = [
+        i32::MIN,
+        i32::MIN + 1,
+        -(1 << 30) - 1,
+        -(1 << 30),
+        1 << 30,
+        (1 << 30) + 1,
+        i32::MAX - 1,
+        i32::MAX,
+    ];
     for _ in 0..rng.range(1, 40) {
         let reach = [5, 30, 3000][rng.range(0, 2) as usize];
-        let v = [(); 3].map(|()| {
-            origin
-                + Point::new(
-                    rng.range(-reach, W as i32 + reach),
-                    rng.range(-reach, H as i32 + reach),
-                )
-        });
+        let mut coordinate = |start: i32, size: u32| {
+            if rng.range(0, 4) == 0 {
+                far[rng.range(0, 7) as usize]
+            } else {
+                let pixels = i64::from(start) + i64::from(rng.range(-reach, size as i32 + reach));
+                let units = pixels * i64::from(G::UNIT) + i64::from(rng.range(0, G::UNIT - 1));
+                units.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+            }
+        };
+        let mut v = [(); 3].map(|()| (coordinate(origin.x, W), coordinate(origin.y, H)));
         // Some degenerate: a vertex on the line through the other two, or on another.
-        let mut v = v;
         if rng.range(0, 7) == 0 {
             let k = rng.range(-2, 2);
-            v[2] = v[0] + (v[1] - v[0]) * k;
+            let on_line = |a: i32, b: i32| a.wrapping_add(b.wrapping_sub(a).wrapping_mul(k));
+            v[2] = (on_line(v[0].0, v[1].0), on_line(v[0].1, v[1].1));
         }
-        let triangle = Triangle { vertices: v };
+        let triangle = G::from_units(v);
         let style = match rng.range(0, 3) {
             0 => SceneStyle::Flat(FlatStyle::new(color(rng))),
             1 => SceneStyle::Gouraud(
@@ -117,7 +170,11 @@ fn random_scene<'a>(
 
 /// The reference: every triangle drawn in order into a full frame and depth buffer (through
 /// embedded-graphics' translation when the scene's screen is not at the origin).
-fn full_frame(scene: &Scene<'_, Rgb565, 64>, background: Rgb565, far: u16) -> Vec<Rgb565> {
+fn full_frame<G: SceneShape>(
+    scene: &TestScene<'_, G>,
+    background: Rgb565,
+    far: u16,
+) -> Vec<Rgb565> {
     let mut pixels = vec![background; (W * H) as usize];
     let mut depths = vec![far; (W * H) as usize];
     let mut screen = Framebuffer::new(&mut pixels, W, H).unwrap();
@@ -164,8 +221,8 @@ fn full_frame(scene: &Scene<'_, Rgb565, 64>, background: Rgb565, far: u16) -> Ve
 
 /// The scene rendered in bands of `rows` rows, keeping set-ups in `setups` if given (rendered
 /// twice then: the second frame must not use the first's set-ups wrongly).
-fn banded(
-    scene: &Scene<'_, Rgb565, 64>,
+fn banded<G: SceneShape>(
+    scene: &TestScene<'_, G>,
     rows: u32,
     background: Rgb565,
     far: u16,
@@ -190,9 +247,9 @@ fn banded(
     }
 }
 
-fn render_into<K: SetupCache>(
+fn render_into<K: SetupCache, G: SceneShape>(
     bands: &mut Bands<'_, Rgb565, Rgb565, K>,
-    scene: &Scene<'_, Rgb565, 64>,
+    scene: &TestScene<'_, G>,
     background: Rgb565,
 ) -> Vec<Rgb565> {
     let mut pixels = vec![Rgb565::new(1, 2, 3); (W * H) as usize];
@@ -216,38 +273,60 @@ fn render_into<K: SetupCache>(
     pixels
 }
 
+/// Renders a random scene of `G` triangles in bands of several heights, with and without kept
+/// set-ups, and checks each image against the full frame.
+fn bands_match_the_full_frame<G: SceneShape>(seed: u64) -> Result<(), TestCaseError> {
+    let mut rng = Rng(seed);
+    let texels: Vec<Rgb565> = (0..6 * 5).map(|_| color(&mut rng)).collect();
+    let texture = Texels::new(&texels, 6, 5).unwrap();
+    let test =
+        [DepthTest::Less, DepthTest::LessOrEqual, DepthTest::Greater][rng.range(0, 2) as usize];
+    let far = if test == DepthTest::Greater {
+        0
+    } else {
+        u16::MAX
+    };
+    // Screens at the origin and off it (bands then draw at an offset in both axes).
+    let origin = [Point::zero(), Point::new(-13, 21), Point::new(40, -7)][rng.range(0, 2) as usize];
+    let scene = random_scene::<G>(&mut rng, texture, test, origin);
+    let background = color(&mut rng);
+    let want = full_frame(&scene, background, far);
+    for rows in [1, 7, 16, H, H + 5] {
+        let got = banded(&scene, rows, background, far, None);
+        prop_assert!(got == want, "band height {} differs", rows);
+    }
+    // Kept set-ups: a slot for every triangle, for some, for none; the slots used for
+    // another scene first, whose set-ups must not be taken for this one's, then for a
+    // scene of no triangles (each frame forgets only the slots its own scene reads).
+    let slots: Vec<SetupSlot> = (0..64).map(|_| SetupSlot::EMPTY).collect();
+    let count = [64, rng.range(1, 8) as usize, 0][rng.range(0, 2) as usize];
+    let other = random_scene::<G>(&mut rng, texture, test, origin);
+    let empty: TestScene<G> = Scene::new(scene.screen()).with_depth_test(test);
+    for rows in [1, 7, H] {
+        let _ = banded(&other, rows, background, far, Some(&slots[..count]));
+        let _ = banded(&empty, rows, background, far, Some(&slots[..count]));
+        let got = banded(&scene, rows, background, far, Some(&slots[..count]));
+        prop_assert!(
+            got == want,
+            "band height {} with {} set-up slots differs",
+            rows,
+            count
+        );
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(400))]
 
     #[test]
     fn bands_give_the_full_frame_image(seed in any::<u64>()) {
-        let mut rng = Rng(seed);
-        let texels: Vec<Rgb565> = (0..6 * 5).map(|_| color(&mut rng)).collect();
-        let texture = Texels::new(&texels, 6, 5).unwrap();
-        let test = [DepthTest::Less, DepthTest::LessOrEqual, DepthTest::Greater][rng.range(0, 2) as usize];
-        let far = if test == DepthTest::Greater { 0 } else { u16::MAX };
-        // Screens at the origin and off it (bands then draw at an offset in both axes).
-        let origin = [Point::zero(), Point::new(-13, 21), Point::new(40, -7)][rng.range(0, 2) as usize];
-        let scene = random_scene(&mut rng, texture, test, origin);
-        let background = color(&mut rng);
-        let want = full_frame(&scene, background, far);
-        for rows in [1, 7, 16, H, H + 5] {
-            let got = banded(&scene, rows, background, far, None);
-            prop_assert!(got == want, "band height {} differs", rows);
-        }
-        // Kept set-ups: a slot for every triangle, for some, for none; the slots used for
-        // another scene first, whose set-ups must not be taken for this one's, then for a
-        // scene of no triangles (each frame forgets only the slots its own scene reads).
-        let slots: Vec<SetupSlot> = (0..64).map(|_| SetupSlot::EMPTY).collect();
-        let count = [64, rng.range(1, 8) as usize, 0][rng.range(0, 2) as usize];
-        let other = random_scene(&mut rng, texture, test, origin);
-        let empty = Scene::new(scene.screen()).with_depth_test(test);
-        for rows in [1, 7, H] {
-            let _ = banded(&other, rows, background, far, Some(&slots[..count]));
-            let _ = banded(&empty, rows, background, far, Some(&slots[..count]));
-            let got = banded(&scene, rows, background, far, Some(&slots[..count]));
-            prop_assert!(got == want, "band height {} with {} set-up slots differs", rows, count);
-        }
+        bands_match_the_full_frame::<Triangle>(seed)?;
+    }
+
+    #[test]
+    fn subpixel_bands_give_the_full_frame_image(seed in any::<u64>()) {
+        bands_match_the_full_frame::<SubPixelTriangle>(seed)?;
     }
 }
 
