@@ -355,3 +355,137 @@ fn documented_gradient() {
     assert_eq!(rec.get(Point::new(31, 0)), Some(Rgb565::new(16, 31, 0)));
     assert_eq!(rec.get(Point::new(0, 0)), Some(Rgb565::RED));
 }
+
+/// A target as large as `area` that keeps only the pixels inside `probe`: spans elsewhere are
+/// not even shaded (their colours are never pulled), so that windows thousands of pixels across
+/// can be checked where it matters.
+struct Probe<C> {
+    area: Rectangle,
+    probe: Recorder<C>,
+}
+
+impl<C: PixelColor> Dimensions for Probe<C> {
+    fn bounding_box(&self) -> Rectangle {
+        self.area
+    }
+}
+
+impl<C: PixelColor> DrawTarget for Probe<C> {
+    type Color = C;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        let probe = self.probe.area;
+        self.probe
+            .draw_iter(pixels.into_iter().filter(|Pixel(p, _)| probe.contains(*p)))
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = C>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
+        let probe = self.probe.area;
+        if area.intersection(&probe).is_zero_sized() {
+            return Ok(());
+        }
+        let pixels = area
+            .points()
+            .zip(colors)
+            .filter(|(p, _)| probe.contains(*p));
+        self.probe.draw_iter(pixels.map(|(p, c)| Pixel(p, c)))
+    }
+}
+
+/// Packed channels keep their accuracy across the widest windows they are used in (4096 pixels
+/// for lanes of 16 fraction bits, 2048 for `Rgb666`'s of 15: beyond, the 16.16 path): pixels as
+/// far as can be from where the lanes are anchored (the first vertex, or the window's corner when
+/// that vertex lies off the window) are within one level of exact.
+#[test]
+fn packed_channels_hold_across_the_widest_windows() {
+    fn check<C: ChannelColor<Channels = [u8; 3]> + core::fmt::Debug>(
+        rng: &mut Rng,
+        side: i32,
+        make: impl Fn([u8; 3]) -> C,
+        max: [u8; 3],
+    ) -> usize {
+        let corner = Point::new(rng.range(-5000, 5000), rng.range(-5000, 5000));
+        let area = Rectangle::new(corner, Size::new(side as u32, side as u32));
+        // The probe in the window's far quarter; the first vertex near its other corner or off
+        // the window.
+        let probe_at = corner
+            + Point::new(
+                rng.range(side * 3 / 4, side - 16),
+                rng.range(side * 3 / 4, side - 16),
+            );
+        let probe = Rectangle::new(probe_at, Size::new(16, 16));
+        let first = corner + Point::new(rng.range(-300, 40), rng.range(-300, 40));
+        // Legs three windows long: the window lies inside, the probe covered.
+        let v = [
+            first,
+            corner + Point::new(3 * side, rng.range(-300, 40)),
+            corner + Point::new(rng.range(-300, 40), 3 * side),
+        ];
+        let colors = [(); 3]
+            .map(|()| make([0, 1, 2].map(|k| (rng.range(0, 255) % (i32::from(max[k]) + 1)) as u8)));
+        let mut target = Probe {
+            area,
+            probe: Recorder::new(probe),
+        };
+        Triangle { vertices: v }
+            .into_styled(GouraudStyle::new(colors))
+            .draw(&mut target)
+            .unwrap();
+        let channels = colors.map(|c| c.channels());
+        let mut checked = 0;
+        for p in window_points(&probe) {
+            let covered = reference_covers(v, p, Rule::TopLeft);
+            assert_eq!(
+                target.probe.writes_at(p),
+                u32::from(covered),
+                "coverage at {p:?}"
+            );
+            if let Some(c) = target.probe.get(p) {
+                checked += 1;
+                let got = c.channels();
+                for k in 0..3 {
+                    let want =
+                        exact_channel(v, [channels[0][k], channels[1][k], channels[2][k]], p);
+                    assert!(
+                        (i128::from(got[k]) - want).abs() <= 1,
+                        "channel {k} at {p:?}: got {}, exact {want} ({v:?}, {colors:?})",
+                        got[k]
+                    );
+                }
+            }
+        }
+        checked
+    }
+    let mut rng = Rng(0x5EED_1A7E);
+    let mut checked = 0;
+    for _ in 0..150 {
+        checked += check(
+            &mut rng,
+            4096,
+            |[r, g, b]| Rgb565::new(r, g, b),
+            [31, 63, 31],
+        );
+        checked += check(
+            &mut rng,
+            4096,
+            |[r, g, b]| Rgb555::new(r, g, b),
+            [31, 31, 31],
+        );
+        checked += check(
+            &mut rng,
+            2048,
+            |[r, g, b]| Rgb666::new(r, g, b),
+            [63, 63, 63],
+        );
+    }
+    // Every probe lies inside its triangle.
+    assert_eq!(checked, 3 * 150 * 256);
+}

@@ -310,6 +310,22 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
+    fn planes_mapped<const N: usize, const SETUP: u32, const M: usize>(
+        &self,
+        values: impl Fn() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+        memo: Option<&AreaMemo>,
+        map: impl FnOnce(Planes<N, SETUP>) -> Planes<M, SETUP>,
+    ) -> Option<Planes<M, SETUP>> {
+        self.through_slot(|| {
+            self.shape
+                .planes_with(values, bias, reference, memo)
+                .map(map)
+        })
+    }
+
+    #[inline(always)]
     fn planes_in<const N: usize, const SETUP: u32>(
         &self,
         values: [[i64; N]; 3],

@@ -92,6 +92,21 @@ pub trait Shape: sealed::Sealed {
         self.planes(values(), bias, reference, memo)
     }
 
+    /// What `map` makes of [`Shape::planes_with`]'s planes: set-ups derived from planes, which
+    /// band rendering keeps between bands in their stead.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn planes_mapped<const N: usize, const SETUP: u32, const M: usize>(
+        &self,
+        values: impl Fn() -> [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+        memo: Option<&AreaMemo>,
+        map: impl FnOnce(Planes<N, SETUP>) -> Planes<M, SETUP>,
+    ) -> Option<Planes<M, SETUP>> {
+        self.planes_with(values, bias, reference, memo).map(map)
+    }
+
     /// Planes of per-vertex `values` with their reference kept within `window`, the area's
     /// reciprocal through `memo` (see [`Shape::planes`]).
     #[doc(hidden)]

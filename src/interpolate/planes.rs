@@ -439,6 +439,30 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         }
     }
 
+    /// Planes whose first is of value `base` at `origin` and gradients `dx`, `dy` (wrapping),
+    /// the others zero, with no steps along a span (their user steps on its own): for
+    /// [`TrackedPlanes::first_at`].
+    #[inline(always)]
+    pub(crate) fn first_only(origin: Point, base: i64, dx: i64, dy: i64) -> Self {
+        let mut planes = Self::empty(origin);
+        planes.base[0] = base;
+        planes.dx[0] = dx;
+        planes.dy[0] = dy;
+        planes
+    }
+
+    /// Where the planes are evaluated from: their values there are [`Planes::base`].
+    #[inline(always)]
+    pub(crate) fn origin(&self) -> Point {
+        self.origin
+    }
+
+    /// d/dy in 2^-SETUP units per pixel (wrapping: only sums are meaningful).
+    #[inline(always)]
+    pub(crate) fn dy(&self) -> &[i64; N] {
+        &self.dy
+    }
+
     /// Planes from their values at `origin` and gradients, with the steps derived.
     #[inline(always)]
     fn from_parts(origin: Point, base: [i64; N], dx: [i64; N], dy: [i64; N]) -> Self {
@@ -1095,7 +1119,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     #[inline(always)]
     fn track(&self, x: i32, y: i32) {
         if N <= 2 {
-            self.move_to(x, y);
+            self.move_to::<N>(x, y);
         } else {
             self.move_to_out_of_line(x, y);
         }
@@ -1105,12 +1129,12 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     /// that starts spans.
     #[inline(never)]
     fn move_to_out_of_line(&self, x: i32, y: i32) {
-        self.move_to(x, y);
+        self.move_to::<N>(x, y);
     }
 
-    /// See [`TrackedPlanes::track`].
+    /// See [`TrackedPlanes::track`]: the first `M` values (`M <= N`) move, the others stay.
     #[inline(always)]
-    fn move_to(&self, x: i32, y: i32) {
+    fn move_to<const M: usize>(&self, x: i32, y: i32) {
         let (last_x, last_y) = self.last.get();
         self.last.set((x, y));
         let (dx, dy) = (x.wrapping_sub(last_x), y.wrapping_sub(last_y));
@@ -1119,14 +1143,14 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
             // multiplies once per plane.
             let sum = |k: usize| self.row_sum[k].get();
             match dx.wrapping_sub(self.row_move.get()) {
-                0 => (0..N).for_each(|k| self.add(k, sum(k))),
-                1 => (0..N).for_each(|k| self.add(k, sum(k).wrapping_add(self.dx[k]))),
+                0 => (0..M).for_each(|k| self.add(k, sum(k))),
+                1 => (0..M).for_each(|k| self.add(k, sum(k).wrapping_add(self.dx[k]))),
                 -1 => {
-                    (0..N).for_each(|k| self.add(k, sum(k).wrapping_sub(self.dx[k])));
+                    (0..M).for_each(|k| self.add(k, sum(k).wrapping_sub(self.dx[k])));
                 }
                 _ => {
                     let columns = i64::from(dx);
-                    for k in 0..N {
+                    for k in 0..M {
                         let product = match i16::try_from(dx) {
                             Ok(columns) => mul_count(self.dx[k], columns),
                             Err(_) => self.dx[k].wrapping_mul(columns),
@@ -1139,7 +1163,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                 }
             }
         } else if dy == 0 && (-Self::NEAR..=Self::NEAR).contains(&dx) {
-            for k in 0..N {
+            for k in 0..M {
                 let step = if dx < 0 {
                     self.dx[k].wrapping_neg()
                 } else {
@@ -1154,9 +1178,9 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
             let rows = i64::from(y) - i64::from(last_y);
             if cfg!(target_has_atomic = "32") {
                 // One multiply per product: inline, as the other moves.
-                (0..N).for_each(|k| self.add(k, self.product(k, columns, rows)));
+                (0..M).for_each(|k| self.add(k, self.product(k, columns, rows)));
             } else {
-                self.move_far(columns, rows);
+                self.move_far::<M>(columns, rows);
             }
         }
     }
@@ -1183,14 +1207,23 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     /// that the near moves keep their registers.
     #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
     #[inline(never)]
-    fn move_far(&self, columns: i64, rows: i64) {
+    fn move_far<const M: usize>(&self, columns: i64, rows: i64) {
         match (i16::try_from(columns), i16::try_from(rows)) {
-            (Ok(columns), Ok(rows)) => (0..N).for_each(|k| {
+            (Ok(columns), Ok(rows)) => (0..M).for_each(|k| {
                 let sum = mul_count(self.dx[k], columns).wrapping_add(mul_count(self.dy[k], rows));
                 self.add(k, sum);
             }),
-            _ => (0..N).for_each(|k| self.add(k, self.product(k, columns, rows))),
+            _ => (0..M).for_each(|k| self.add(k, self.product(k, columns, rows))),
         }
+    }
+
+    /// The first value at pixel `(x, y)` in 2^-SETUP units, the others left behind: for
+    /// planes whose first carries all a painter steps (a Gouraud triangle's packed lanes).
+    /// Inline, as one plane's moves are.
+    #[inline(always)]
+    pub(crate) fn first_at(&self, x: i32, y: i32) -> i64 {
+        self.move_to::<1>(x, y);
+        self.values[0].get()
     }
 
     /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].

@@ -13,7 +13,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::TrackedPlanes,
+    interpolate::{Planes, TrackedPlanes},
 };
 
 /// Fills a triangle with colours interpolated between its vertices.
@@ -171,21 +171,41 @@ where
         // Rounded: half a level of bias turns truncation into rounding to nearest. Dithered:
         // the threshold takes its place.
         let bias = if self.dither { 0 } else { 1 << 15 };
-        let planes = triangle.planes_with(values, bias, window.top_left, visitor.area_memo())?;
-        let painter = GouraudPainter {
-            packed_steps: PackedShader::<C, N>::packed_steps(&planes.step),
+        let memo = visitor.area_memo();
+        let painter = |planes, packed| GouraudPainter {
             planes: TrackedPlanes::new(planes),
+            packed,
             dither: self.dither,
             color: PhantomData,
         };
+        let packs = |planes: &Planes<N>| PackedShader::<C, N>::packs(planes, window, self.dither);
         // Only anti-aliasing paints pixels outside the triangle: only it carries the range.
         Some(if V::EDGE_PIXELS {
+            // Anti-aliased edge pixels keep planes of their own beside the painter's.
+            let planes = triangle.planes_with(values, bias, window.top_left, memo)?;
+            let packed = packs(&planes);
+            let stepped = if packed {
+                PackedShader::<C, N>::lanes(planes)
+            } else {
+                planes
+            };
             visitor.visit(EdgeClamped {
-                painter,
+                painter: painter(stepped, packed),
+                planes: TrackedPlanes::new(planes),
                 corners: self.colors,
             })
         } else {
-            visitor.visit(painter)
+            // Made once per triangle: a band renderer keeps the lanes between bands, not the
+            // planes they come from. The lanes keep the planes' origin, which decides.
+            let planes = triangle.planes_mapped(values, bias, window.top_left, memo, |planes| {
+                if packs(&planes) {
+                    PackedShader::<C, N>::lanes(planes)
+                } else {
+                    planes
+                }
+            })?;
+            let packed = packs(&planes);
+            visitor.visit(painter(planes, packed))
         })
     }
 }
@@ -193,10 +213,12 @@ where
 /// The painter of a Gouraud triangle, dithered or not: one type, so the edge walk is built
 /// once per target; each run picks its span loop.
 struct GouraudPainter<C, const N: usize> {
+    /// The channels' planes or, when `packed`, the lanes ([`PackedShader`]) as the first
+    /// plane (the others unused): colour types that pack, not dithered, windows within the
+    /// lanes' reach.
     planes: TrackedPlanes<N>,
+    packed: bool,
     dither: bool,
-    /// The steps packed as [`PackedShader`] steps them, when the colour type packs.
-    packed_steps: u64,
     color: PhantomData<C>,
 }
 
@@ -204,6 +226,8 @@ struct GouraudPainter<C, const N: usize> {
 /// vertices' range (see [`GouraudPainter::paint_clamped`]).
 struct EdgeClamped<C, const N: usize> {
     painter: GouraudPainter<C, N>,
+    /// The planes the edge pixels are painted from.
+    planes: TrackedPlanes<N>,
     /// The vertices' colours.
     corners: [C; 3],
 }
@@ -227,7 +251,7 @@ where
         D: DrawTarget<Color = C>,
     {
         self.painter
-            .paint_clamped(run, offset, target, &self.corners)
+            .paint_clamped(&self.planes, run, offset, target, &self.corners)
     }
 }
 
@@ -247,10 +271,14 @@ where
     where
         D: DrawTarget<Color = C>,
     {
-        if self.dither {
-            self.paint_thresholds(run, &BAYER, offset, target)
+        if self.packed {
+            Self::paint_packed(&self.planes, run, offset, target)
+        } else if self.dither {
+            Self::paint_thresholds(&self.planes, run, &BAYER, offset, target)
         } else if PackedShader::<C, N>::FITS {
-            self.paint_packed(run, offset, target)
+            // Rare (a window thousands of pixels across): in 16.16, with no thresholds, by the
+            // dithered loop, which is out of line anyway.
+            Self::paint_thresholds(&self.planes, run, &[[0; 4]; 4], offset, target)
         } else {
             shade_span(
                 &GouraudShader::<C, N, false>(&self.planes, &BAYER, PhantomData),
@@ -272,6 +300,7 @@ where
     #[inline(never)]
     fn paint_clamped<D>(
         &self,
+        planes: &TrackedPlanes<N>,
         run: Span,
         offset: Point,
         target: &mut D,
@@ -285,8 +314,8 @@ where
             core::array::from_fn(|k| channels.iter().map(|c| c[k]).min().unwrap_or(0));
         let high: [u8; N] =
             core::array::from_fn(|k| channels.iter().map(|c| c[k]).max().unwrap_or(0));
-        let mut values = self.planes.at(run.x, run.y);
-        let step = self.planes.step;
+        let mut values = planes.at(run.x, run.y);
+        let step = planes.step;
         let mut x = run.x;
         let colors = (0..run.len).map(|_| {
             let threshold = if self.dither {
@@ -308,22 +337,20 @@ where
         target.fill_contiguous(&stored(run, offset), colors)
     }
 
-    /// Paints `run` with the channels packed two to a word ([`PackedShader`]), in stretches of
-    /// at most [`PACKED_RUN`] pixels, each started from the planes. Out of line (see
-    /// `paint`).
+    /// Paints `run` with the channels packed in one integer ([`PackedShader`]), the first of
+    /// `lanes`. Out of line (see `paint`).
     #[inline(never)]
-    fn paint_packed<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    fn paint_packed<D>(
+        lanes: &TrackedPlanes<N>,
+        run: Span,
+        offset: Point,
+        target: &mut D,
+    ) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = C>,
     {
-        if run.len <= PACKED_RUN {
-            let shader = PackedShader::<C, N>(&self.planes, self.packed_steps, PhantomData);
-            shade_span(&shader, run, offset, target)
-        } else {
-            // Rare (wider than most displays): in 16.16, with no thresholds, by the dithered
-            // loop, which is out of line anyway.
-            self.paint_thresholds(run, &[[0; 4]; 4], offset, target)
-        }
+        let shader = PackedShader::<C, N>(lanes, lanes.dx[0] as u64, PhantomData);
+        shade_span(&shader, run, offset, target)
     }
 
     /// Paints `run` channel by channel in 16.16, adding `thresholds` (a 4x4 pattern over
@@ -331,7 +358,7 @@ where
     /// nearest with zeros when the planes carry the half-level bias.
     #[inline(never)]
     fn paint_thresholds<D>(
-        &self,
+        planes: &TrackedPlanes<N>,
         run: Span,
         thresholds: &[[u32; 4]; 4],
         offset: Point,
@@ -341,7 +368,7 @@ where
         D: DrawTarget<Color = C>,
     {
         shade_span(
-            GouraudShader::<C, N, true>(&self.planes, thresholds, PhantomData),
+            GouraudShader::<C, N, true>(planes, thresholds, PhantomData),
             run,
             offset,
             target,
@@ -387,102 +414,46 @@ where
     }
 }
 
-/// Longest stretch a [`PackedShader`] steps before starting again from the planes.
-const PACKED_RUN: u32 = 256;
-
-/// Up to four 16-bit lanes, two to a 32-bit word: lanes 0 and 1 in the first word (lane 0 in
-/// the lower half), 2 and 3 in the second (lane 2 in the upper half). A carry or borrow between
-/// the two lanes of a word cancels out as long as each lane's value stays within its 16 bits.
-/// [`PackedShader`] steps both words as one 64-bit integer ([`Lanes::wide`]).
+/// Colours along a span, rounded to nearest, for colour types of two or three channels of at
+/// most 6 bits each (`Rgb565`, `Rgb555`, `Rgb666`, their `Bgr` twins): every channel in one
+/// lane of a 64-bit integer (its level bits, then at least 15 fraction bits), so that a pixel
+/// costs one 64-bit addition (two instructions on 32-bit cores) instead of one per channel,
+/// and the step stays in registers (measured on the firmware's `big` scene when the lanes
+/// came in: Cortex-M0 25.9 -> 21.7 instructions per pixel, Cortex-M4F 16.4 -> 13.7).
 ///
-/// For `Rgb565` that puts red's level bits at bits 11 to 15, where the pixel has them (two
-/// shifts clear its fraction, no mask), and blue's at the top of the second word (one shift):
-/// with red in the upper half the Cortex-M0 span loop kept a mask in a register and reloaded
-/// both of the step's words every pixel (measured on `big`: 14.5 -> 13 instructions a pixel in
-/// the loop; Gouraud 19.43 -> 18.19, Gouraud + depth -3.7%, bands -3.3%, M4F translucent -4%).
-#[derive(Copy, Clone, Debug, Default)]
-struct Lanes(u32, u32);
-
-impl Lanes {
-    /// The word holding lane `k`.
-    #[inline(always)]
-    fn word(&mut self, k: usize) -> &mut u32 {
-        if k < 2 {
-            &mut self.0
-        } else {
-            &mut self.1
-        }
-    }
-
-    /// Where lane `k` starts in its word.
-    #[inline(always)]
-    fn position(k: usize) -> u32 {
-        if k == 1 || k == 2 {
-            16
-        } else {
-            0
-        }
-    }
-
-    /// Adds `value` (signed) at lane `k`: a negative one in a lower half borrows from the
-    /// upper one, which adding the lanes' values gives back.
-    #[inline(always)]
-    fn add(&mut self, k: usize, value: i32) {
-        let at = Self::position(k);
-        let word = self.word(k);
-        *word = word.wrapping_add((value as u32) << at);
-    }
-
-    /// The top `bits` bits of lane `k`.
-    #[inline(always)]
-    fn top(mut self, k: usize, bits: u32) -> u32 {
-        let at = Self::position(k) + 16 - bits;
-        (*self.word(k) >> at) & ((1 << bits) - 1)
-    }
-
-    /// Both words as one integer, the first word low.
-    #[inline(always)]
-    fn wide(self) -> u64 {
-        (u64::from(self.1) << 32) | u64::from(self.0)
-    }
-
-    /// The words of [`Lanes::wide`].
-    #[inline(always)]
-    fn from_wide(wide: u64) -> Self {
-        Self(wide as u32, (wide >> 32) as u32)
-    }
-}
-
-/// Colours along a span, rounded to nearest, for colour types of two to four channels of at
-/// most 6 bits each (`Rgb565`, `Rgb555`, `Bgr565`, ...): the channels stepped together in
-/// 16-bit [`Lanes`] (a channel's level bits, then fraction bits), so that a pixel costs one
-/// or two additions instead of one per channel and the steps stay in registers (measured on
-/// the firmware's `big` scene: Cortex-M0 25.9 -> 21.7 instructions per pixel, Cortex-M4F 16.4
-/// -> 13.7).
+/// Three lanes are 21, 22 and 21 bits wide (from bit 0, 21 and 43), two 32 each. A lane's value
+/// is its channel in units of 2^-f of a level (f its fraction bits) and the lanes' integer is
+/// the sum of each lane's value shifted to its place, wrapping: a sum of such integers is the
+/// integer of the lanes' sums, carries and borrows between lanes cancelling out, so wherever
+/// the true lane values fit their lanes the level bits read out exactly. In `Rgb565` the level
+/// bits fall where the pixel wants them but for a shift: red at bits 16 to 20, green at 37 to
+/// 42 (bits 5 to 10 of the upper word: a mask) and blue at 59 to 63 (one shift).
 ///
-/// A channel of `b` bits keeps `16 - b` fraction bits, at least 10: its start is truncated by
-/// less than 2^-10 of a level and its step rounded to 2^-11, so after at most [`PACKED_RUN`]
-/// pixels it is within 2^-10 + 256 * 2^-11 < 1/7 of a level of the 16.16 value, and the level
-/// within one of the exact one. Inside the triangle a channel plus the half-level rounding
-/// bias lies between 1/2 and its maximum plus 1/2, so it never leaves its 16 bits.
+/// The lanes are one linear function of the pixel, tracked from span to span as one plane
+/// (the first of the painter's [`TrackedPlanes`]): their value at the planes' origin (a small
+/// triangle's first vertex, or the window's corner), rounded down to 2^-f, plus the column and
+/// row gradients, each rounded down to 2^-f, times the pixel's offset from there. A pixel's
+/// lanes therefore depend on where it is only, not on where its span starts (bands, depth runs
+/// and anti-aliased rows split spans differently and draw the same colours). Each rounding is
+/// less than 2^-f, so within [`reach`] (2^(f - 4)) columns and rows of the origin a lane is
+/// within 2^-f (1 + 2^(f - 3)) < 1/7 of a level of the exact value: inside the triangle, with
+/// the half-level rounding bias, it lies between 1/2 - 1/7 and its maximum plus 1/2 + 1/7,
+/// inside its lane, and the level read out is the exact value rounded to nearest or, within
+/// 1/7 of a half level, the level beside it. Where a pixel of the window could lie farther
+/// from the origin (rare: a window, or a first vertex off it, thousands of pixels across) the
+/// triangle takes the 16.16 path.
+///
+/// Before the lanes were tracked (2026-11-29, eleventh session) each span packed them from the
+/// three planes, moved to its start; one plane moved instead of three: per `mesh` triangle
+/// Cortex-M0 Gouraud -8%, Gouraud + depth -6%, Cortex-M4F -8% and -5%, for 0.8 KB more flash
+/// in each Gouraud share on Cortex-M0.
 struct PackedShader<'a, C, const N: usize>(&'a TrackedPlanes<N>, u64, PhantomData<C>);
 
 impl<C, const N: usize> PackedShader<'_, C, N>
 where
     C: ChannelColor<Channels = [u8; N]>,
 {
-    /// Whether the colour type's channels pack: two to four, none over 6 bits.
-    const FITS: bool = {
-        let mut fits = N >= 2 && N <= 4;
-        let mut k = 0;
-        while k < N {
-            fits &= C::MAX_CHANNELS[k] < 64;
-            k += 1;
-        }
-        fits
-    };
-
-    /// Integer bits of each channel (1 to 6).
+    /// Integer bits of each channel (1 to 8).
     const BITS: [u32; N] = {
         let mut bits = [1; N];
         let mut k = 0;
@@ -496,31 +467,130 @@ where
         bits
     };
 
-    /// Integer bits of channel `k`: a constant, so that no build counts leading zeros per
-    /// pixel (a library routine on Cortex-M0, where `opt-level = "s"` does not unroll the
-    /// channel loop that would fold it away).
-    #[inline(always)]
-    fn bits(k: usize) -> u32 {
-        Self::BITS[k]
+    /// Where each lane starts, and (the next one's start) ends.
+    const STARTS: [u32; N] = {
+        let mut starts = [0; N];
+        let mut k = 0;
+        while k < N {
+            starts[k] = match (N, k) {
+                (3, 1) => 21,
+                (3, 2) => 43,
+                _ => 64 / N as u32 * k as u32,
+            };
+            k += 1;
+        }
+        starts
+    };
+
+    /// The bit after lane `k`.
+    const fn end(k: usize) -> u32 {
+        if k + 1 < N {
+            Self::STARTS[k + 1]
+        } else {
+            64
+        }
     }
 
-    /// The lane steps of planes stepping by `steps` (raw 16.16), each rounded, as one step of
-    /// [`Lanes::wide`]: the lanes' signed steps summed at their places, so that adding it moves
-    /// each word by its lanes' true sum, which keeps the word within its 32 bits (its lanes stay
-    /// within theirs) and carries nothing into the other. Once per triangle.
-    #[inline(always)]
-    fn packed_steps(steps: &[u32; N]) -> u64 {
-        let mut packed = 0i64;
-        if Self::FITS {
-            for k in 0..N {
-                let bits = Self::bits(k);
-                let step = (steps[k] as i32).wrapping_add(1 << (bits - 1)) >> bits;
-                let at = if k < 2 { 0 } else { 32 } + Lanes::position(k);
-                packed = packed.wrapping_add(i64::from(step) << at);
-            }
+    /// Fraction bits of each lane.
+    const FRACTION: [u32; N] = {
+        let mut fraction = [0; N];
+        let mut k = 0;
+        while k < N {
+            fraction[k] = Self::end(k) - Self::STARTS[k] - Self::BITS[k];
+            k += 1;
         }
-        packed as u64
+        fraction
+    };
+
+    /// Whether the colour type's channels pack: two or three lanes of at least 15 fraction
+    /// bits, each lane's level bits within one 32-bit word.
+    const FITS: bool = {
+        let mut fits = N == 2 || N == 3;
+        let mut k = 0;
+        while k < N {
+            let (top, low) = (Self::end(k), Self::end(k) - Self::BITS[k]);
+            fits &= Self::BITS[k] <= 6 && Self::FRACTION[k] >= 15 && low / 32 == (top - 1) / 32;
+            k += 1;
+        }
+        fits
+    };
+
+    /// The fewest fraction bits of any lane.
+    const LEAST_FRACTION: u32 = {
+        let mut least = 64;
+        let mut k = 0;
+        while k < N {
+            if Self::FRACTION[k] < least {
+                least = Self::FRACTION[k];
+            }
+            k += 1;
+        }
+        least
+    };
+
+    /// Values of the planes (2^-32 units, wrapping) as the lanes' integer, each rounded down
+    /// to its lane's units.
+    #[inline(always)]
+    fn pack(values: &[i64; N]) -> u64 {
+        let mut packed = 0u64;
+        for k in 0..N {
+            let lane = values[k] >> (32 - Self::FRACTION[k]);
+            packed = packed.wrapping_add((lane as u64) << Self::STARTS[k]);
+        }
+        packed
     }
+
+    /// Whether a triangle of `planes` set up for `window` (which holds every pixel drawn)
+    /// paints from lanes: colour types that pack, not dithered, and every pixel of the window
+    /// within reach of the planes' origin (a small triangle's first vertex, or the window's
+    /// corner), which leaves out windows thousands of pixels across and triangles whose first
+    /// vertex lies thousands of pixels off the window.
+    #[inline(always)]
+    fn packs(planes: &Planes<N>, window: &Rectangle, dither: bool) -> bool {
+        let reach = i64::from(reach(Self::LEAST_FRACTION));
+        let origin = planes.origin();
+        // Each way: the origin within reach of the window's first and last pixel.
+        let near = |origin: i32, start: i32, size: u32| {
+            let (origin, start) = (i64::from(origin), i64::from(start));
+            origin >= start + i64::from(size) - 1 - reach && origin <= start + reach
+        };
+        Self::FITS
+            && !dither
+            && near(origin.x, window.top_left.x, window.size.width)
+            && near(origin.y, window.top_left.y, window.size.height)
+    }
+
+    /// The lanes of `planes`, as the first of planes otherwise zero, from their origin: once
+    /// per triangle.
+    #[inline(always)]
+    fn lanes(planes: Planes<N>) -> Planes<N> {
+        Planes::first_only(
+            planes.origin(),
+            Self::pack(&planes.base) as i64,
+            Self::pack(&planes.dx) as i64,
+            Self::pack(planes.dy()) as i64,
+        )
+    }
+
+    /// Channel `k`'s level in the lanes' integer `lanes`.
+    #[inline(always)]
+    fn level(lanes: u64, k: usize) -> u8 {
+        let low = Self::end(k) - Self::BITS[k];
+        let word = if low >= 32 {
+            (lanes >> 32) as u32
+        } else {
+            lanes as u32
+        };
+        ((word >> (low % 32)) & ((1 << Self::BITS[k]) - 1)) as u8
+    }
+}
+
+/// Pixels from the lanes' anchor, each way, within which lanes of `fraction` bits (15 to 17;
+/// any, for colour types that do not pack) keep their roundings under 1/7 of a level (see
+/// [`PackedShader`]).
+const fn reach(fraction: u32) -> u32 {
+    let fraction = if fraction > 24 { 24 } else { fraction };
+    1 << fraction.saturating_sub(4)
 }
 
 impl<C, const N: usize> PixelShader for PackedShader<'_, C, N>
@@ -528,29 +598,22 @@ where
     C: ChannelColor<Channels = [u8; N]>,
 {
     type Color = C;
-    /// The lanes as one 64-bit integer ([`Lanes::wide`]) and its step: one addition (two
-    /// instructions with the carry on 32-bit cores) moves every channel. Stepped as two words
-    /// instead, the compiler reached the pixels of each 4x unrolled trip by offsets from the
-    /// first, loaded from memory on Cortex-M0 (measured on `big`: Cortex-M4F 13.6 -> 11.0
-    /// instructions per pixel, Cortex-M0 20.7 -> 20.0; x86-64 8.3 -> 9.6, within its
-    /// budget).
+    /// The lanes' integer and its step: one addition (two instructions with the carry on
+    /// 32-bit cores) moves every channel. Stepped as two words instead, the compiler reached
+    /// the pixels of each 4x unrolled trip by offsets from the first, loaded from memory on
+    /// Cortex-M0 (measured on `big`: Cortex-M4F 13.6 -> 11.0 instructions per pixel, Cortex-M0
+    /// 20.7 -> 20.0; x86-64 8.3 -> 9.6, within its budget).
     type State = (u64, u64);
 
     #[inline(always)]
     fn start(&self, x: i32, y: i32) -> Self::State {
-        let values = self.0.at(x, y);
-        let mut packed = Lanes::default();
-        for k in 0..N {
-            packed.add(k, ((values[k] >> Self::bits(k)) & 0xFFFF) as i32);
-        }
-        (packed.wide(), self.1)
+        (self.0.first_at(x, y) as u64, self.1)
     }
 
     #[inline(always)]
-    fn next(&self, (packed, steps): &mut Self::State) -> C {
-        let lanes = Lanes::from_wide(*packed);
-        let channels = per_channel(|k| lanes.top(k, Self::bits(k)) as u8);
-        *packed = packed.wrapping_add(*steps);
+    fn next(&self, (lanes, step): &mut Self::State) -> C {
+        let channels = per_channel(|k| Self::level(*lanes, k));
+        *lanes = lanes.wrapping_add(*step);
         C::from_channels(channels)
     }
 }
