@@ -310,18 +310,18 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
-    fn planes_mapped<const N: usize, const SETUP: u32, const M: usize>(
+    fn planes_adjusted<const N: usize, const SETUP: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
         memo: Option<&AreaMemo>,
-        map: impl FnOnce(Planes<N, SETUP>) -> Planes<M, SETUP>,
-    ) -> Option<Planes<M, SETUP>> {
+        adjust: impl FnOnce(&mut Planes<N, SETUP>),
+    ) -> Option<Planes<N, SETUP>> {
         self.through_slot(|| {
-            self.shape
-                .planes_with(values, bias, reference, memo)
-                .map(map)
+            let mut planes = self.shape.planes_with(values, bias, reference, memo)?;
+            adjust(&mut planes);
+            Some(planes)
         })
     }
 

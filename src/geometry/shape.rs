@@ -92,19 +92,21 @@ pub trait Shape: sealed::Sealed {
         self.planes(values(), bias, reference, memo)
     }
 
-    /// What `map` makes of [`Shape::planes_with`]'s planes: set-ups derived from planes, which
-    /// band rendering keeps between bands in their stead.
+    /// [`Shape::planes_with`]'s planes as `adjust` leaves them: set-ups derived from planes,
+    /// which band rendering keeps between bands in their stead.
     #[doc(hidden)]
     #[inline(always)]
-    fn planes_mapped<const N: usize, const SETUP: u32, const M: usize>(
+    fn planes_adjusted<const N: usize, const SETUP: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
         memo: Option<&AreaMemo>,
-        map: impl FnOnce(Planes<N, SETUP>) -> Planes<M, SETUP>,
-    ) -> Option<Planes<M, SETUP>> {
-        self.planes_with(values, bias, reference, memo).map(map)
+        adjust: impl FnOnce(&mut Planes<N, SETUP>),
+    ) -> Option<Planes<N, SETUP>> {
+        let mut planes = self.planes_with(values, bias, reference, memo)?;
+        adjust(&mut planes);
+        Some(planes)
     }
 
     /// Planes of per-vertex `values` with their reference kept within `window`, the area's

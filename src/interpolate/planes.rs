@@ -439,16 +439,15 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         }
     }
 
-    /// Planes whose first is of value `base` at `origin` and gradients `dx`, `dy` (wrapping),
-    /// the others zero, with no steps along a span (their user steps on its own): for
-    /// [`TrackedPlanes::first_at`].
+    /// Makes these planes' first of value `base` and gradients `dx`, `dy` (wrapping) from the
+    /// same origin, the others zero, with no steps along a span (their user steps on its own):
+    /// for [`TrackedPlanes::first_at`].
     #[inline(always)]
-    pub(crate) fn first_only(origin: Point, base: i64, dx: i64, dy: i64) -> Self {
-        let mut planes = Self::empty(origin);
-        planes.base[0] = base;
-        planes.dx[0] = dx;
-        planes.dy[0] = dy;
-        planes
+    pub(crate) fn keep_first(&mut self, base: i64, dx: i64, dy: i64) {
+        *self = Self::empty(self.origin);
+        self.base[0] = base;
+        self.dx[0] = dx;
+        self.dy[0] = dy;
     }
 
     /// Where the planes are evaluated from: their values there are [`Planes::base`].

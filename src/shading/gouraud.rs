@@ -184,11 +184,10 @@ where
             // Anti-aliased edge pixels keep planes of their own beside the painter's.
             let planes = triangle.planes_with(values, bias, window.top_left, memo)?;
             let packed = packs(&planes);
-            let stepped = if packed {
-                PackedShader::<C, N>::lanes(planes)
-            } else {
-                planes
-            };
+            let mut stepped = planes;
+            if packed {
+                PackedShader::<C, N>::to_lanes(&mut stepped);
+            }
             visitor.visit(EdgeClamped {
                 painter: painter(stepped, packed),
                 planes: TrackedPlanes::new(planes),
@@ -197,13 +196,12 @@ where
         } else {
             // Made once per triangle: a band renderer keeps the lanes between bands, not the
             // planes they come from. The lanes keep the planes' origin, which decides.
-            let planes = triangle.planes_mapped(values, bias, window.top_left, memo, |planes| {
-                if packs(&planes) {
-                    PackedShader::<C, N>::lanes(planes)
-                } else {
-                    planes
-                }
-            })?;
+            let planes =
+                triangle.planes_adjusted(values, bias, window.top_left, memo, |planes| {
+                    if packs(planes) {
+                        PackedShader::<C, N>::to_lanes(planes);
+                    }
+                })?;
             let packed = packs(&planes);
             visitor.visit(painter(planes, packed))
         })
@@ -547,12 +545,13 @@ where
     /// vertex lies thousands of pixels off the window.
     #[inline(always)]
     fn packs(planes: &Planes<N>, window: &Rectangle, dither: bool) -> bool {
-        let reach = i64::from(reach(Self::LEAST_FRACTION));
+        let reach = reach(Self::LEAST_FRACTION) as i32;
         let origin = planes.origin();
-        // Each way: the origin within reach of the window's first and last pixel.
-        let near = |origin: i32, start: i32, size: u32| {
-            let (origin, start) = (i64::from(origin), i64::from(start));
-            origin >= start + i64::from(size) - 1 - reach && origin <= start + reach
+        // Each way: the origin within reach of the window's first and last pixel (in i32:
+        // windows past 2^24 pixels are beyond reach anyway).
+        let near = |origin: i32, start: i32, size: u32| match origin.checked_sub(start) {
+            Some(offset) if size <= 1 << 24 => offset <= reach && offset >= size as i32 - 1 - reach,
+            _ => false,
         };
         Self::FITS
             && !dither
@@ -560,16 +559,16 @@ where
             && near(origin.y, window.top_left.y, window.size.height)
     }
 
-    /// The lanes of `planes`, as the first of planes otherwise zero, from their origin: once
-    /// per triangle.
+    /// Turns `planes` into their lanes, the first of planes otherwise zero, from their origin:
+    /// once per triangle.
     #[inline(always)]
-    fn lanes(planes: Planes<N>) -> Planes<N> {
-        Planes::first_only(
-            planes.origin(),
-            Self::pack(&planes.base) as i64,
-            Self::pack(&planes.dx) as i64,
-            Self::pack(planes.dy()) as i64,
-        )
+    fn to_lanes(planes: &mut Planes<N>) {
+        let (base, dx, dy) = (
+            Self::pack(&planes.base),
+            Self::pack(&planes.dx),
+            Self::pack(planes.dy()),
+        );
+        planes.keep_first(base as i64, dx as i64, dy as i64);
     }
 
     /// Channel `k`'s level in the lanes' integer `lanes`.
