@@ -195,14 +195,18 @@ where
             })
         } else {
             // Made once per triangle: a band renderer keeps the lanes between bands, not the
-            // planes they come from. The lanes keep the planes' origin, which decides.
+            // planes they come from. The lanes keep the planes' origin, which decides: again
+            // only for a set-up a band renderer kept (one made here is decided as it is made).
+            let mut decided = None;
             let planes =
                 triangle.planes_adjusted(values, bias, window.top_left, memo, |planes| {
-                    if packs(planes) {
+                    let packed = packs(planes);
+                    if packed {
                         PackedShader::<C, N>::to_lanes(planes);
                     }
+                    decided = Some(packed);
                 })?;
-            let packed = packs(&planes);
+            let packed = decided.unwrap_or_else(|| packs(&planes));
             visitor.visit(painter(planes, packed))
         })
     }
