@@ -1218,7 +1218,8 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
 
     /// The first value at pixel `(x, y)` in 2^-SETUP units, the others left behind: for
     /// planes whose first carries all a painter steps (a Gouraud triangle's packed lanes).
-    /// Inline, as one plane's moves are.
+    /// Planes moved so are read this way only: the others fall out of step (their values and
+    /// row sums stay where they were). Inline, as one plane's moves are.
     #[inline(always)]
     pub(crate) fn first_at(&self, x: i32, y: i32) -> i64 {
         self.move_to::<1>(x, y);
