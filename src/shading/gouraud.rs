@@ -21,11 +21,12 @@ use crate::{
 /// Each channel is interpolated in its colour type's own range, from the plane through the
 /// three vertex colours, and rounded to the nearest value (or dithered, see
 /// [`GouraudStyle::with_dither`]): every channel is within one level of the exact value
-/// rounded. Along a row the channels step with 16 fraction bits, or, for colour types of two to
-/// four channels of at most 6 bits (`Rgb565`, `Rgb555`, `Bgr565`, ...), two to a 32-bit word
-/// with at least 10 fraction bits each, from a start exact to 2^-16 of a level. A triangle
-/// whose vertices share a colour is filled with exactly that colour, and a vertex pixel gets
-/// exactly its vertex's colour. Each covered row goes to the target as one `fill_contiguous`
+/// rounded. Along a row the channels step with 16 fraction bits, or, for colour types of two or
+/// three channels of at most 6 bits (`Rgb565`, `Rgb555`, `Rgb666`, their `Bgr` twins), all in
+/// one 64-bit integer with at least 15 fraction bits each, which moves from span to span as
+/// one value and stays within 1/7 of a level of exact. A triangle whose vertices share a
+/// colour is filled with exactly that colour, and a vertex pixel gets exactly its vertex's
+/// colour. Each covered row goes to the target as one `fill_contiguous`
 /// call.
 ///
 /// # Examples
