@@ -319,9 +319,8 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         adjust: impl FnOnce(&mut Planes<N, SETUP>),
     ) -> Option<Planes<N, SETUP>> {
         self.through_slot(|| {
-            let mut planes = self.shape.planes_with(values, bias, reference, memo)?;
-            adjust(&mut planes);
-            Some(planes)
+            self.shape
+                .planes_adjusted(values, bias, reference, memo, adjust)
         })
     }
 

@@ -27,7 +27,7 @@ pub struct Planes<const N: usize, const SETUP: u32 = 32> {
     pub(crate) base: [i64; N],
     /// d/dx and d/dy in 2^-SETUP units per pixel (wrapping: only sums are meaningful).
     pub(crate) dx: [i64; N],
-    dy: [i64; N],
+    pub(crate) dy: [i64; N],
     /// d/dx in 2^-16 units per pixel, for stepping along a span.
     pub(crate) step: [u32; N],
 }
@@ -454,12 +454,6 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     #[inline(always)]
     pub(crate) fn origin(&self) -> Point {
         self.origin
-    }
-
-    /// d/dy in 2^-SETUP units per pixel (wrapping: only sums are meaningful).
-    #[inline(always)]
-    pub(crate) fn dy(&self) -> &[i64; N] {
-        &self.dy
     }
 
     /// Planes from their values at `origin` and gradients, with the steps derived.

@@ -179,16 +179,21 @@ where
             dither: self.dither,
             color: PhantomData,
         };
-        let packs = |planes: &Planes<N>| PackedShader::<C, N>::packs(planes, window, self.dither);
+        // Whether the triangle paints from lanes, which then replace its planes (see
+        // `PackedShader::packs`).
+        let to_lanes = |planes: &mut Planes<N>| {
+            let packed = PackedShader::<C, N>::packs(planes, window, self.dither);
+            if packed {
+                PackedShader::<C, N>::to_lanes(planes);
+            }
+            packed
+        };
         // Only anti-aliasing paints pixels outside the triangle: only it carries the range.
         Some(if V::EDGE_PIXELS {
             // Anti-aliased edge pixels keep planes of their own beside the painter's.
             let planes = triangle.planes_with(values, bias, window.top_left, memo)?;
-            let packed = packs(&planes);
             let mut stepped = planes;
-            if packed {
-                PackedShader::<C, N>::to_lanes(&mut stepped);
-            }
+            let packed = to_lanes(&mut stepped);
             visitor.visit(EdgeClamped {
                 painter: painter(stepped, packed),
                 planes: TrackedPlanes::new(planes),
@@ -201,13 +206,10 @@ where
             let mut decided = None;
             let planes =
                 triangle.planes_adjusted(values, bias, window.top_left, memo, |planes| {
-                    let packed = packs(planes);
-                    if packed {
-                        PackedShader::<C, N>::to_lanes(planes);
-                    }
-                    decided = Some(packed);
+                    decided = Some(to_lanes(planes));
                 })?;
-            let packed = decided.unwrap_or_else(|| packs(&planes));
+            let packed = decided
+                .unwrap_or_else(|| PackedShader::<C, N>::packs(&planes, window, self.dither));
             visitor.visit(painter(planes, packed))
         })
     }
@@ -571,7 +573,7 @@ where
         let (base, dx, dy) = (
             Self::pack(&planes.base),
             Self::pack(&planes.dx),
-            Self::pack(planes.dy()),
+            Self::pack(&planes.dy),
         );
         planes.keep_first(base as i64, dx as i64, dy as i64);
     }
@@ -589,7 +591,7 @@ where
     }
 }
 
-/// Pixels from the lanes' anchor, each way, within which lanes of `fraction` bits (15 to 17;
+/// Pixels from the planes' origin, each way, within which lanes of `fraction` bits (15 to 17;
 /// any, for colour types that do not pack) keep their roundings under 1/7 of a level (see
 /// [`PackedShader`]).
 const fn reach(fraction: u32) -> u32 {
