@@ -42,6 +42,9 @@ fn remainder(x: u64, m: u64) -> u64 {
 }
 
 impl Rng {
+    /// Out of line: inlined into each scene it was about 2 KB of the Cortex-M0 firmware (its
+    /// 64-bit multiplies are library calls there), harness code that no user's firmware has.
+    #[inline(never)]
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
