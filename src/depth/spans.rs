@@ -111,61 +111,116 @@ where
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
         let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;
 
-        // Depths are linear along the span, so their extremes lie at its ends (`last` is the
-        // value the stepping below reaches, wrapping alike). When even the worst of them
-        // passes against the best stored depth, all pixels pass: one reduction over the
-        // stored depths decides it, and the span is written and painted without per-pixel
-        // tests. This is the common case (a surface in front of what is there).
-        let last = start.wrapping_add(step.wrapping_mul(span.len - 1));
-        let worst = ((start >> 16) as i32 ^ flip).max((last >> 16) as i32 ^ flip);
-        let all = all_stored_pass(stored, flip as u16, worst, slack) || {
-            // Otherwise test every pixel, still without early exits (vectorised).
-            let mut all = true;
-            let mut depth = start;
-            for &old in stored.iter() {
-                all &= passes((depth >> 16) as i32, old);
-                depth = depth.wrapping_add(step);
+        if span.len <= SHORT_SPAN && self.flip == 0 && self.write {
+            // Short spans (the rows of small and mesh triangles): tested and written in one
+            // pass that stops at the first pixel failing, cheaper there than the two passes
+            // below (measured: Gouraud + depth per `mesh` triangle -5% on Cortex-M0 and -6%
+            // on M4F). Written, nearer-wins tests (`flip` zero) only: the common case.
+            let (first_failing, depth) = pass_nearer(stored, start, step, slack);
+            if first_failing < stored.len() {
+                let run_start = (first_failing > 0).then_some(0);
+                return self.paint_passing(span, first_failing, run_start, depth);
             }
-            all
-        };
-        if all {
+        } else {
+            // Depths are linear along the span, so their extremes lie at its ends (`last` is
+            // the value the stepping below reaches, wrapping alike). When even the worst of
+            // them passes against the best stored depth, all pixels pass: one reduction over
+            // the stored depths decides it, and the span is written and painted without
+            // per-pixel tests. This is the common case (a surface in front of what is there).
+            let last = start.wrapping_add(step.wrapping_mul(span.len - 1));
+            let worst = ((start >> 16) as i32 ^ flip).max((last >> 16) as i32 ^ flip);
+            let all = all_stored_pass(stored, flip as u16, worst, slack) || {
+                // Otherwise test every pixel, still without early exits (vectorised).
+                let mut all = true;
+                let mut depth = start;
+                for &old in stored.iter() {
+                    all &= passes((depth >> 16) as i32, old);
+                    depth = depth.wrapping_add(step);
+                }
+                all
+            };
+            if !all {
+                return self.paint_passing(span, 0, None, start);
+            }
             if self.write {
                 write_depths(stored, start, step);
             }
-            return self.painter.paint(span, self.offset, self.target);
         }
+        self.painter.paint(span, self.offset, self.target)
+    }
+}
 
-        // Mixed: paint each run of passing pixels.
-        let mut run_start = None;
-        let mut depth = start;
-        for (i, old) in stored.iter_mut().enumerate() {
+impl<D, P> DepthSpans<'_, '_, '_, D, P>
+where
+    D: DrawTarget,
+    P: Painter<Color = D::Color>,
+{
+    /// The mixed case of [`SpanSink::span`]: tests and writes `span`'s pixels from `from` on,
+    /// whose depth is `depth` (those before it passed, from `run_start` on), and paints each
+    /// run of passing pixels. Out of line: the spans that pass whole keep their registers.
+    #[inline(never)]
+    fn paint_passing(
+        &mut self,
+        span: Span,
+        from: usize,
+        mut run_start: Option<usize>,
+        mut depth: u32,
+    ) -> Result<(), D::Error> {
+        let x = span.x.wrapping_sub(self.origin.0) as u32;
+        let y = span.y.wrapping_sub(self.origin.1) as u32;
+        let Some(stored) = self.buffer.run_mut(x, y, span.len) else {
+            return Ok(());
+        };
+        let step = self.depth.step[0];
+        let (flip, slack) = (i32::from(self.flip), self.slack as i32);
+        let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;
+        // One more step past the last pixel ends the last run: one call into the painter.
+        for i in from..=stored.len() {
             let value = (depth >> 16) as i32;
             depth = depth.wrapping_add(step);
-            if passes(value, *old) {
-                if self.write {
-                    *old = value as u16;
+            match stored.get_mut(i) {
+                Some(old) if passes(value, *old) => {
+                    if self.write {
+                        *old = value as u16;
+                    }
+                    run_start.get_or_insert(i);
                 }
-                run_start.get_or_insert(i);
-            } else if let Some(first) = run_start.take() {
-                let run = Span {
-                    x: span.x.wrapping_add(first as i32),
-                    y: span.y,
-                    len: (i - first) as u32,
-                };
-                self.painter.paint(run, self.offset, self.target)?;
+                _ => {
+                    if let Some(first) = run_start.take() {
+                        let run = Span {
+                            x: span.x.wrapping_add(first as i32),
+                            y: span.y,
+                            len: (i - first) as u32,
+                        };
+                        self.painter.paint(run, self.offset, self.target)?;
+                    }
+                }
             }
-        }
-        if let Some(first) = run_start {
-            let run = Span {
-                x: span.x.wrapping_add(first as i32),
-                y: span.y,
-                len: span.len - first as u32,
-            };
-            self.painter.paint(run, self.offset, self.target)?;
         }
         Ok(())
     }
 }
+
+/// How many of `stored`'s depths, from the first, the span's depths (`start` stepping by
+/// `step`, 16.16) pass in a row under a nearer-wins test (`depth < stored + slack`), each
+/// written over the stored one; and the span's depth at the first that fails.
+#[inline(always)]
+fn pass_nearer(stored: &mut [u16], start: u32, step: u32, slack: i32) -> (usize, u32) {
+    let mut depth = start;
+    for (i, old) in stored.iter_mut().enumerate() {
+        let value = (depth >> 16) as i32;
+        if value >= i32::from(*old) + slack {
+            return (i, depth);
+        }
+        *old = value as u16;
+        depth = depth.wrapping_add(step);
+    }
+    (stored.len(), depth)
+}
+
+/// Spans of at most this many pixels are tested and written in one pass (see
+/// `DepthSpans::span`).
+const SHORT_SPAN: u32 = 16;
 
 /// Whether the (flipped) depth `worst` passes `worst < (old ^ flip) + slack` against every
 /// stored depth `old`: the differences `worst - slack - (old ^ flip)`, combined by bitwise
