@@ -107,9 +107,7 @@ where
         };
         let start = self.depth.at(span.x, span.y)[0];
         let step = self.depth.step[0];
-        // In i32 the comparison needs no unsigned tricks: both sides stay below 2^17.
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
-        let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;
 
         if span.len <= SHORT_SPAN && self.flip == 0 && self.write {
             // Short spans (the rows of small and mesh triangles): tested and written in one
@@ -134,7 +132,7 @@ where
                 let mut all = true;
                 let mut depth = start;
                 for &old in stored.iter() {
-                    all &= passes((depth >> 16) as i32, old);
+                    all &= passes((depth >> 16) as i32, old, flip, slack);
                     depth = depth.wrapping_add(step);
                 }
                 all
@@ -168,18 +166,18 @@ where
     ) -> Result<(), D::Error> {
         let x = span.x.wrapping_sub(self.origin.0) as u32;
         let y = span.y.wrapping_sub(self.origin.1) as u32;
+        // The span's depths again: `span` borrowed them while it could still paint.
         let Some(stored) = self.buffer.run_mut(x, y, span.len) else {
             return Ok(());
         };
         let step = self.depth.step[0];
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
-        let passes = |depth: i32, old: u16| (depth ^ flip) < (i32::from(old) ^ flip) + slack;
         // One more step past the last pixel ends the last run: one call into the painter.
         for i in from..=stored.len() {
             let value = (depth >> 16) as i32;
             depth = depth.wrapping_add(step);
             match stored.get_mut(i) {
-                Some(old) if passes(value, *old) => {
+                Some(old) if passes(value, *old, flip, slack) => {
                     if self.write {
                         *old = value as u16;
                     }
@@ -199,6 +197,13 @@ where
         }
         Ok(())
     }
+}
+
+/// Whether `depth` passes the test `(depth ^ flip) < (old ^ flip) + slack` against the stored
+/// `old`. In i32 the comparison needs no unsigned tricks: both sides stay below 2^17.
+#[inline(always)]
+fn passes(depth: i32, old: u16, flip: i32, slack: i32) -> bool {
+    (depth ^ flip) < (i32::from(old) ^ flip) + slack
 }
 
 /// How many of `stored`'s depths, from the first, the span's depths (`start` stepping by
