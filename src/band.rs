@@ -540,7 +540,7 @@ where
     /// A 320 x 240 scene of 200 Gouraud triangles with depth in 16-row bands draws each
     /// triangle into 3.6 bands on average; with 200 slots (24,000 bytes on Cortex-M) the
     /// bands cost Cortex-M0 1.16 times the instructions of the full-frame render and
-    /// Cortex-M4F 1.16 times, against 1.27 and 1.22 without (BENCHMARKS.md).
+    /// Cortex-M4F 1.17 times, against 1.27 and 1.22 without (BENCHMARKS.md).
     ///
     /// # Examples
     ///
