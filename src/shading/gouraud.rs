@@ -584,9 +584,9 @@ where
 
     /// Whether a triangle of `planes` set up for `window` (which holds every pixel drawn)
     /// paints from lanes: colour types that pack, and every pixel of the window within reach
-    /// (dithered: an eighth of it, see [`DitheredLanes`]) of the planes' origin (a small triangle's first vertex, or the window's
-    /// corner), which leaves out windows thousands of pixels across and triangles whose first
-    /// vertex lies thousands of pixels off the window.
+    /// (dithered: an eighth of it, see [`DitheredLanes`]) of the planes' origin (a small
+    /// triangle's first vertex, or the window's corner), which leaves out windows thousands of
+    /// pixels across and triangles whose first vertex lies thousands of pixels off the window.
     #[inline(always)]
     fn packs(planes: &Planes<N>, window: &Rectangle, dither: bool) -> bool {
         let origin = planes.origin();
@@ -674,7 +674,7 @@ where
 /// from one pixel's sum to the next's (the lanes' step plus the change of thresholds), rotated
 /// each pixel: unrolled four times, the rotation costs nothing and a pixel costs what a rounded
 /// one does but for its step's load (measured on `big` when the dithered lanes came in:
-/// Cortex-M0 28.14 -> 19.30 instructions per pixel, 1.12 times rounded lanes; Cortex-M4F
+/// Cortex-M0 28.14 -> 19.28 instructions per pixel, 1.12 times rounded lanes; Cortex-M4F
 /// 19.77 -> 12.89, 1.22 times).
 ///
 /// Within an eighth of the lanes' [`reach`] of the planes' origin (512 pixels for `Rgb565`,
