@@ -397,6 +397,41 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Anti-aliased `Rgb565` Gouraud, rounded or dithered (both from packed lanes): every
+    /// channel stays within the vertices' range, and fully covered pixels are what plain
+    /// drawing gives them, bit for bit (the same span loops paint both).
+    #[test]
+    fn anti_aliased_rgb565_gouraud_matches_plain_drawing_inside(v in triangle(), colors in [[0..=31u8, 0..=63u8, 0..=31u8], [0..=31u8, 0..=63u8, 0..=31u8], [0..=31u8, 0..=63u8, 0..=31u8]], dither: bool) {
+        use embedded_graphics::pixelcolor::Rgb565;
+        use trirast::{shading::ChannelColor, target::BlendTarget, GouraudStyle};
+        let t = Triangle::new(v[0], v[1], v[2]);
+        let style = GouraudStyle::new(colors.map(|[r, g, b]| Rgb565::new(r, g, b))).with_dither(dither);
+        let low: [u8; 3] = core::array::from_fn(|k| colors.iter().map(|c| c[k]).min().unwrap());
+        let high: [u8; 3] = core::array::from_fn(|k| colors.iter().map(|c| c[k]).max().unwrap());
+        let background = Rgb565::new(low[0], low[1], low[2]);
+        let frame = |draw: &dyn Fn(&mut trirast::Framebuffer<'_, Rgb565>)| {
+            let mut pixels = vec![background; 24 * 24];
+            draw(&mut trirast::Framebuffer::new(&mut pixels, 24, 24).unwrap());
+            pixels
+        };
+        let got = frame(&|f| f.draw_anti_aliased(&t, &style).unwrap());
+        let plain = frame(&|f| t.into_styled(style).draw(f).unwrap());
+        for (i, (c, reference)) in got.iter().zip(&plain).enumerate() {
+            let p = Point::new(i as i32 % 24, i as i32 / 24);
+            let channels = c.channels();
+            for k in 0..3 {
+                prop_assert!(channels[k] >= low[k] && channels[k] <= high[k], "{v:?} at {p:?}: channel {k} {channels:?} outside {low:?}..={high:?}");
+            }
+            if exact_coverage(v, p) == 1.0 {
+                prop_assert_eq!(c, reference, "{:?} at {:?}", v, p);
+            }
+        }
+    }
+}
+
 #[test]
 fn anti_aliased_textures_match_plain_drawing_inside() {
     use embedded_graphics::pixelcolor::Gray8;
