@@ -404,6 +404,45 @@ impl<C: PixelColor> DrawTarget for Probe<C> {
     }
 }
 
+/// A Gouraud triangle drawn, rounded or dithered, into a window `side` pixels square at a
+/// random place, recording only a 16x16 probe in the window's far quarter: the first vertex
+/// lies near the window's other corner or off the window (where the lanes are anchored), the
+/// legs are three windows long (the window lies inside, the probe covered), and each vertex
+/// colour is `make` of random channels up to `max`.
+fn wide_window_case<C: ChannelColor<Channels = [u8; 3]> + core::fmt::Debug>(
+    rng: &mut Rng,
+    side: i32,
+    make: impl Fn([u8; 3]) -> C,
+    max: [u8; 3],
+    dither: bool,
+) -> ([Point; 3], [C; 3], Probe<C>) {
+    let corner = Point::new(rng.range(-5000, 5000), rng.range(-5000, 5000));
+    let area = Rectangle::new(corner, Size::new(side as u32, side as u32));
+    let probe_at = corner
+        + Point::new(
+            rng.range(side * 3 / 4, side - 16),
+            rng.range(side * 3 / 4, side - 16),
+        );
+    let probe = Rectangle::new(probe_at, Size::new(16, 16));
+    let first = corner + Point::new(rng.range(-300, 40), rng.range(-300, 40));
+    let v = [
+        first,
+        corner + Point::new(3 * side, rng.range(-300, 40)),
+        corner + Point::new(rng.range(-300, 40), 3 * side),
+    ];
+    let colors = [(); 3]
+        .map(|()| make([0, 1, 2].map(|k| (rng.range(0, 255) % (i32::from(max[k]) + 1)) as u8)));
+    let mut target = Probe {
+        area,
+        probe: Recorder::new(probe),
+    };
+    Triangle { vertices: v }
+        .into_styled(GouraudStyle::new(colors).with_dither(dither))
+        .draw(&mut target)
+        .unwrap();
+    (v, colors, target)
+}
+
 /// Packed channels keep their accuracy across the widest windows they are used in (4096 pixels
 /// for lanes of 16 fraction bits, 2048 for `Rgb666`'s of 15: beyond, the 16.16 path): pixels as
 /// far as can be from where the lanes are anchored (the first vertex, or the window's corner when
@@ -416,33 +455,8 @@ fn packed_channels_hold_across_the_widest_windows() {
         make: impl Fn([u8; 3]) -> C,
         max: [u8; 3],
     ) -> usize {
-        let corner = Point::new(rng.range(-5000, 5000), rng.range(-5000, 5000));
-        let area = Rectangle::new(corner, Size::new(side as u32, side as u32));
-        // The probe in the window's far quarter; the first vertex near its other corner or off
-        // the window.
-        let probe_at = corner
-            + Point::new(
-                rng.range(side * 3 / 4, side - 16),
-                rng.range(side * 3 / 4, side - 16),
-            );
-        let probe = Rectangle::new(probe_at, Size::new(16, 16));
-        let first = corner + Point::new(rng.range(-300, 40), rng.range(-300, 40));
-        // Legs three windows long: the window lies inside, the probe covered.
-        let v = [
-            first,
-            corner + Point::new(3 * side, rng.range(-300, 40)),
-            corner + Point::new(rng.range(-300, 40), 3 * side),
-        ];
-        let colors = [(); 3]
-            .map(|()| make([0, 1, 2].map(|k| (rng.range(0, 255) % (i32::from(max[k]) + 1)) as u8)));
-        let mut target = Probe {
-            area,
-            probe: Recorder::new(probe),
-        };
-        Triangle { vertices: v }
-            .into_styled(GouraudStyle::new(colors))
-            .draw(&mut target)
-            .unwrap();
+        let (v, colors, target) = wide_window_case(rng, side, make, max, false);
+        let probe = target.probe.area;
         let channels = colors.map(|c| c.channels());
         let mut checked = 0;
         for p in window_points(&probe) {
@@ -509,30 +523,8 @@ fn dithered_packed_channels_hold_across_the_widest_windows() {
         make: impl Fn([u8; 3]) -> C,
         max: [u8; 3],
     ) -> usize {
-        let corner = Point::new(rng.range(-5000, 5000), rng.range(-5000, 5000));
-        let area = Rectangle::new(corner, Size::new(side as u32, side as u32));
-        let probe_at = corner
-            + Point::new(
-                rng.range(side * 3 / 4, side - 16),
-                rng.range(side * 3 / 4, side - 16),
-            );
-        let probe = Rectangle::new(probe_at, Size::new(16, 16));
-        let first = corner + Point::new(rng.range(-300, 40), rng.range(-300, 40));
-        let v = [
-            first,
-            corner + Point::new(3 * side, rng.range(-300, 40)),
-            corner + Point::new(rng.range(-300, 40), 3 * side),
-        ];
-        let colors = [(); 3]
-            .map(|()| make([0, 1, 2].map(|k| (rng.range(0, 255) % (i32::from(max[k]) + 1)) as u8)));
-        let mut target = Probe {
-            area,
-            probe: Recorder::new(probe),
-        };
-        Triangle { vertices: v }
-            .into_styled(GouraudStyle::new(colors).with_dither(true))
-            .draw(&mut target)
-            .unwrap();
+        let (v, colors, target) = wide_window_case(rng, side, make, max, true);
+        let probe = target.probe.area;
         let channels = colors.map(|c| c.channels());
         let mut checked = 0;
         for p in window_points(&probe) {

@@ -214,7 +214,7 @@ fn pass_nearer(stored: &mut [u16], start: u32, step: u32, slack: i32) -> (usize,
     let mut depth = start;
     for (i, old) in stored.iter_mut().enumerate() {
         let value = (depth >> 16) as i32;
-        if value >= i32::from(*old) + slack {
+        if !passes(value, *old, 0, slack) {
             return (i, depth);
         }
         *old = value as u16;
