@@ -516,9 +516,11 @@ fn wide(p: Point) -> (i64, i64) {
 }
 
 /// The gradients `[dx, dy]` (2^-`SETUP` units per pixel) of a small triangle's plane with
-/// value deltas `da1`, `da2` along edges `e`, through the doubled area's `reciprocal`
-/// ([`Planes::new_small`]), for values that are not whole (texture coordinates). Out of line
-/// on Cortex-M0, one copy per set-up precision: inline, each number of planes had its own.
+/// value deltas `da1`, `da2` along edges `e` (in 2^-`SUBPIXEL_BITS` pixel: 0 for whole-pixel
+/// vertices, 8 for sub-pixel ones), through the doubled area's `reciprocal`, for the values
+/// [`whole_numerators`] does not take (texture coordinates, depths far apart): see
+/// [`Planes::new_small`]. Out of line on Cortex-M0, one copy per set-up precision: inline,
+/// each number of planes had its own (2 KB each).
 #[cfg_attr(not(target_has_atomic = "32"), inline(never))]
 #[cfg_attr(target_has_atomic = "32", inline(always))]
 fn fractional_gradients<const SETUP: u32, const SUBPIXEL_BITS: u32>(
