@@ -699,16 +699,20 @@ where
 /// the same amount, 8 of 16 levels, from each even column to the next odd one), so a span
 /// known to start on an even column (`EVEN`) steps by `[p, q, p, r]` and one on an odd column
 /// (`ODD`) by `[q, p, r, p]`: the span loop then holds three steps, not four (M4F: six stack
-/// loads per four pixels before). `ANY` takes the four from the table.
+/// loads per four pixels before; 12.31 instructions per pixel on `big` with the two loops,
+/// 1.17 times rounded lanes). `ANY` takes the four from the table: Cortex-M0 keeps one loop
+/// (flash).
 struct DitheredLanes<'a, C, const N: usize, const START: u8>(
     &'a TrackedPlanes<N>,
     u64,
     PhantomData<C>,
 );
 
-/// [`DitheredLanes`] spans from any column, from an even one and from an odd one.
+/// [`DitheredLanes`] spans from any column.
 const ANY: u8 = 0;
+/// [`DitheredLanes`] spans from an even column.
 const EVEN: u8 = 1;
+/// [`DitheredLanes`] spans from an odd column.
 const ODD: u8 = 2;
 
 impl<C, const N: usize, const START: u8> DitheredLanes<'_, C, N, START>
