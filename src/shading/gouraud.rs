@@ -343,8 +343,8 @@ where
         let mut values = planes.at(run.x, run.y);
         let step = planes.step;
         let mut x = run.x;
+        let dithered = matches!(self.span_loop, SpanLoop::Dithered | SpanLoop::DitheredLanes);
         let colors = (0..run.len).map(|_| {
-            let dithered = matches!(self.span_loop, SpanLoop::Dithered | SpanLoop::DitheredLanes);
             let threshold = if dithered {
                 BAYER[(run.y & 3) as usize][(x & 3) as usize]
             } else {
