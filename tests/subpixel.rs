@@ -66,12 +66,14 @@ fn check(raw: [(i32, i32); 3], rule: Rule, window: Rectangle) -> Result<(), Test
                 i as i32 / window.size.width as i32,
             );
         let sample = Point::new(p.x * 256, p.y * 256);
+        let expected = reference_covers(v, sample, rule);
+        prop_assert_eq!(hit, expected, "{:?} {:?} at {:?}", raw, rule, p);
+        // The public point query agrees with the walk and the reference.
         prop_assert_eq!(
-            hit,
-            reference_covers(v, sample, rule),
-            "{:?} {:?} at {:?}",
+            t.covers(p, rule.to_crate()),
+            expected,
+            "covers {:?} at {:?}",
             raw,
-            rule,
             p
         );
     }
@@ -150,6 +152,42 @@ proptest! {
         for_each_span(&whole, rule.to_crate(), &window, |s| { a.push(s); Ok::<(), ()>(()) }).unwrap();
         for_each_subpixel_span(&t, rule.to_crate(), &window, |s| { b.push(s); Ok::<(), ()>(()) }).unwrap();
         prop_assert_eq!(a, b);
+    }
+}
+
+/// The point query for pixels whose samples lie beyond `i32` in 1/256 pixel: no overflow,
+/// and the answer of the same triangle moved by whole pixels.
+#[test]
+fn point_queries_far_out() {
+    let raw = [(-512, -512), (i32::MAX, 0), (0, i32::MAX)];
+    let t = sub(raw);
+    // Pixel (8,388,000, 100) lies inside (samples to 2^31 units), pixel (8,389,000, 100) not.
+    assert!(t.covers(Point::new(8_388_000, 100), trirast::FillRule::TopLeft));
+    assert!(!t.covers(Point::new(8_389_000, 100), trirast::FillRule::TopLeft));
+    for p in [
+        Point::new(i32::MAX, i32::MAX),
+        Point::new(i32::MIN, 0),
+        Point::new(0, i32::MIN),
+    ] {
+        assert!(!t.covers(p, trirast::FillRule::Inclusive), "{p:?}");
+    }
+    let whole = Triangle::new(
+        Point::new(-2, -2),
+        Point::new(i32::MAX, 0),
+        Point::new(0, i32::MAX),
+    );
+    let moved = SubPixelTriangle::from(whole);
+    for p in [
+        Point::new(-1, -1),
+        Point::new(5, 5),
+        Point::new(-3, 0),
+        Point::new(40_000, 40_000),
+    ] {
+        assert_eq!(
+            moved.covers(p, trirast::FillRule::TopLeft),
+            whole.covers(p, trirast::FillRule::TopLeft),
+            "{p:?}"
+        );
     }
 }
 

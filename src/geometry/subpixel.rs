@@ -2,12 +2,13 @@
 
 use embedded_graphics::{
     geometry::{Dimensions, Point, Size},
-    primitives::{Primitive, Rectangle},
+    primitives::{ContainsPoint, Primitive, Rectangle},
     transform::Transform,
 };
 use fixed::types::{I16F16, I24F8};
 
-use super::{Orientation, Triangle};
+use super::{triangle::half_space_covers, Orientation, Triangle};
+use crate::coverage::FillRule;
 
 /// A point with 8 fraction bits: 1/256 of a pixel, as Direct3D's 16.8 vertices, over
 /// ±2^23 pixels. Pixel `(x, y)` is the point `(x, y)`, as for [`Point`].
@@ -241,6 +242,55 @@ impl SubPixelTriangle {
     #[must_use]
     pub fn is_degenerate(&self) -> bool {
         self.doubled_signed_area() == 0
+    }
+
+    /// True when `rule` draws pixel `point` as part of this triangle: the exact half-space test
+    /// of the sample point `(x, y)` against the sub-pixel vertices, which the drawing code
+    /// reproduces row by row. For hit tests (a touch on a needle, a pointer over a shape).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::*;
+    /// use fixed::types::I24F8;
+    /// use trirast::{geometry::{SubPixelTriangle, SubPoint}, FillRule};
+    ///
+    /// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+    /// let t = SubPixelTriangle::new(at(0.5, 0.0), at(4.0, 0.0), at(0.5, 3.5));
+    /// assert!(!t.covers(Point::new(0, 1), FillRule::TopLeft)); // left of the left edge
+    /// assert!(t.covers(Point::new(1, 1), FillRule::TopLeft));
+    /// assert!(!t.covers(Point::new(3, 1), FillRule::TopLeft)); // on the hypotenuse, right
+    /// assert!(t.covers(Point::new(3, 1), FillRule::Inclusive));
+    /// ```
+    #[must_use]
+    pub fn covers(&self, point: Point, rule: FillRule) -> bool {
+        let vertices = self
+            .vertices
+            .map(|p| (i128::from(p.x.to_bits()), i128::from(p.y.to_bits())));
+        let sample = (i128::from(point.x) << 8, i128::from(point.y) << 8);
+        half_space_covers(vertices, sample, rule)
+    }
+}
+
+impl ContainsPoint for SubPixelTriangle {
+    /// True when `point` is one of the pixels the default top-left rule draws (see
+    /// [`SubPixelTriangle::covers`] for either rule).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::ContainsPoint};
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::{SubPixelTriangle, SubPoint};
+    ///
+    /// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+    /// let t = SubPixelTriangle::new(at(0.5, 0.0), at(4.0, 0.0), at(0.5, 3.5));
+    /// assert!(t.contains(Point::new(1, 1)));
+    /// assert!(!t.contains(Point::new(0, 1)));
+    /// ```
+    #[inline]
+    fn contains(&self, point: Point) -> bool {
+        self.covers(point, FillRule::TopLeft)
     }
 }
 

@@ -4,7 +4,7 @@ use core::cmp::Ordering;
 
 use embedded_graphics::{
     geometry::{Dimensions, Point, Size},
-    primitives::{Primitive, Rectangle},
+    primitives::{self, ContainsPoint, Primitive, Rectangle},
     transform::Transform,
 };
 
@@ -167,27 +167,98 @@ impl Triangle {
     /// ```
     #[must_use]
     pub fn covers(&self, point: Point, rule: FillRule) -> bool {
-        // Orient edges so the interior is positive, then test each edge function exactly.
-        let [mut a, b, mut c] = self.vertices.map(|p| (i128::from(p.x), i128::from(p.y)));
-        let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
-        if area == 0 {
-            return false;
+        let wide = |p: Point| (i128::from(p.x), i128::from(p.y));
+        half_space_covers(self.vertices.map(wide), wide(point), rule)
+    }
+}
+
+/// The exact half-space test of the sample `p` against the triangle `vertices` (any order and
+/// winding, any common unit): what [`Triangle::covers`] and
+/// [`SubPixelTriangle::covers`](super::SubPixelTriangle::covers) compute.
+pub(crate) fn half_space_covers(
+    [mut a, b, mut c]: [(i128, i128); 3],
+    p: (i128, i128),
+    rule: FillRule,
+) -> bool {
+    // Orient edges so the interior is positive, then test each edge function exactly.
+    let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    if area == 0 {
+        return false;
+    }
+    if area < 0 {
+        core::mem::swap(&mut a, &mut c);
+    }
+    [(a, b), (b, c), (c, a)].iter().all(|&(from, to)| {
+        // E(p) = (to - from) x (p - from): positive inside for clockwise-on-screen order.
+        let (ex, ey) = (to.0 - from.0, to.1 - from.1);
+        let value = ex * (p.1 - from.1) - ey * (p.0 - from.0);
+        match rule {
+            FillRule::Inclusive => value >= 0,
+            // dE/dx = -ey, dE/dy = ex: an edge is top-left when the interior lies right of
+            // it (dE/dx > 0) or, if horizontal, below it (dE/dy > 0).
+            FillRule::TopLeft => value > 0 || (value == 0 && (ey < 0 || (ey == 0 && ex > 0))),
         }
-        if area < 0 {
-            core::mem::swap(&mut a, &mut c);
+    })
+}
+
+impl From<primitives::Triangle> for Triangle {
+    /// The same vertices in the same order: an embedded-graphics triangle drawn by this crate's
+    /// styles, under its exact fill rules (embedded-graphics' own fill can differ on edges).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives};
+    /// use trirast::Triangle;
+    ///
+    /// let eg = primitives::Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+    /// assert_eq!(Triangle::from(eg).vertices, eg.vertices);
+    /// ```
+    #[inline]
+    fn from(triangle: primitives::Triangle) -> Self {
+        Self {
+            vertices: triangle.vertices,
         }
-        let p = (i128::from(point.x), i128::from(point.y));
-        [(a, b), (b, c), (c, a)].iter().all(|&(from, to)| {
-            // E(p) = (to - from) x (p - from): positive inside for clockwise-on-screen order.
-            let (ex, ey) = (to.0 - from.0, to.1 - from.1);
-            let value = ex * (p.1 - from.1) - ey * (p.0 - from.0);
-            match rule {
-                FillRule::Inclusive => value >= 0,
-                // dE/dx = -ey, dE/dy = ex: an edge is top-left when the interior lies right of
-                // it (dE/dx > 0) or, if horizontal, below it (dE/dy > 0).
-                FillRule::TopLeft => value > 0 || (value == 0 && (ey < 0 || (ey == 0 && ex > 0))),
-            }
-        })
+    }
+}
+
+impl From<Triangle> for primitives::Triangle {
+    /// The same vertices in the same order, as embedded-graphics' triangle (for its stroke
+    /// styles, say).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives};
+    /// use trirast::Triangle;
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+    /// assert_eq!(primitives::Triangle::from(t).vertices, t.vertices);
+    /// ```
+    #[inline]
+    fn from(triangle: Triangle) -> Self {
+        let [a, b, c] = triangle.vertices;
+        primitives::Triangle::new(a, b, c)
+    }
+}
+
+impl ContainsPoint for Triangle {
+    /// True when `point` is one of the pixels the default top-left rule draws (see
+    /// [`Triangle::covers`] for either rule).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::ContainsPoint};
+    /// use trirast::Triangle;
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(4, 0), Point::new(0, 4));
+    /// assert!(t.contains(Point::new(1, 1)));
+    /// assert!(!t.contains(Point::new(4, 0))); // on the right edge: the neighbour's pixel
+    /// ```
+    #[inline]
+    fn contains(&self, point: Point) -> bool {
+        self.covers(point, FillRule::TopLeft)
     }
 }
 
