@@ -136,13 +136,13 @@ fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
     let mut out = C::Channels::default();
     if C::WEIGHT_BITS == 8 {
         let a = i32::from(opacity) + i32::from(opacity >> 7);
-        for_each_slot(out.as_mut(), |k| {
+        each_slot!(out.as_mut(), |k| {
             let (s, d) = (i32::from(source[k]), i32::from(under[k]));
             (d + (((s - d) * a + 128) >> 8)) as u8
         });
     } else {
         let (a, b) = (u32::from(opacity), 255 - u32::from(opacity));
-        for_each_slot(out.as_mut(), |k| {
+        each_slot!(out.as_mut(), |k| {
             let (s, d) = (u32::from(source[k]), u32::from(under[k]));
             div_255_rounded(s * a + d * b) as u8
         });
@@ -150,31 +150,52 @@ fn over_channels<C: ChannelColor>(source: C, under: C, opacity: u8) -> C {
     C::from_channels(out)
 }
 
-/// Sets each element `k` of `slots` to `f(k)`: the first four in straight-line code, any others
-/// in a loop. So the per-pixel channel work stays unrolled at every optimisation level: with
-/// `opt-level = "s"` or `"z"` the loops of `array::map`, `array::from_fn` and iterators stay
-/// loops (or calls), which on Cortex-M0 store each channel to memory and reload it (measured:
-/// Gouraud's `big` pixels cost 5 times as much, bilinear ones 2.4 times). Constant indices
+/// Sets each element `$k` of the slice `$slots` to `$value`, an expression of `$k`: the first
+/// four in straight-line code, any others in a loop. So the per-pixel channel work stays
+/// unrolled at every optimisation level: with `opt-level = "s"` or `"z"` the loops of
+/// `array::map`, `array::from_fn` and iterators stay loops (or calls), which on Cortex-M0 store
+/// each channel to memory and reload it (measured: Gouraud's `big` pixels cost 5 times as
+/// much, bilinear ones 2.4 times). A macro rather than a function taking a closure: at
+/// `"z"` such a closure, called once per channel, stayed a call per channel and pixel, its
+/// index a variable (Gouraud `big` on Cortex-M0 139 instructions a pixel). Constant indices
 /// with `get_mut` fold away once the length is known; plain indexing would not compile for
 /// shorter arrays (an out-of-bounds constant index is an error even where unreachable).
-#[inline(always)]
-fn for_each_slot<T>(slots: &mut [T], mut f: impl FnMut(usize) -> T) {
-    if let Some(value) = slots.get_mut(0) {
-        *value = f(0);
-    }
-    if let Some(value) = slots.get_mut(1) {
-        *value = f(1);
-    }
-    if let Some(value) = slots.get_mut(2) {
-        *value = f(2);
-    }
-    if let Some(value) = slots.get_mut(3) {
-        *value = f(3);
-    }
-    for k in 4..slots.len() {
-        slots[k] = f(k);
-    }
+macro_rules! each_slot {
+    ($slots:expr, |$k:ident| $value:expr) => {{
+        let slots: &mut [_] = $slots;
+        if let Some(slot) = slots.get_mut(0) {
+            let $k: usize = 0;
+            *slot = $value;
+        }
+        if let Some(slot) = slots.get_mut(1) {
+            let $k: usize = 1;
+            *slot = $value;
+        }
+        if let Some(slot) = slots.get_mut(2) {
+            let $k: usize = 2;
+            *slot = $value;
+        }
+        if let Some(slot) = slots.get_mut(3) {
+            let $k: usize = 3;
+            *slot = $value;
+        }
+        for $k in 4..slots.len() {
+            slots[$k] = $value;
+        }
+    }};
 }
+
+/// `[value(0), value(1), ..., value($n - 1)]` for `$value` an expression of `$k`, written out
+/// for up to four channels (see [`each_slot`]).
+macro_rules! per_channel {
+    ($n:expr, |$k:ident| $value:expr) => {{
+        let mut out = [Default::default(); $n];
+        $crate::shading::channels::each_slot!(&mut out[..], |$k| $value);
+        out
+    }};
+}
+
+pub(crate) use {each_slot, per_channel};
 
 /// `value / 255` rounded to nearest, for `value <= 255 * 255`, without a division (a
 /// library call on Cortex-M0).
@@ -201,16 +222,16 @@ fn blend_channels<C: ChannelColor>(corners: [C; 4], wx: u32, wy: u32) -> C {
     let [a, b, c, d] = corners;
     let channels = [a.channels(), b.channels(), c.channels(), d.channels()];
     let mut out = C::Channels::default();
-    let blend = |k: usize| {
-        let corner = |i: usize| u32::from(channels[i].as_ref()[k]);
+    let (c0, c1) = (channels[0].as_ref(), channels[1].as_ref());
+    let (c2, c3) = (channels[2].as_ref(), channels[3].as_ref());
+    each_slot!(out.as_mut(), |k| {
         let sum = (1u32 << (shift - 1))
-            + corner(0) * weights[0]
-            + corner(1) * weights[1]
-            + corner(2) * weights[2]
-            + corner(3) * weights[3];
+            + u32::from(c0[k]) * weights[0]
+            + u32::from(c1[k]) * weights[1]
+            + u32::from(c2[k]) * weights[2]
+            + u32::from(c3[k]) * weights[3];
         (sum >> shift) as u8
-    };
-    for_each_slot(out.as_mut(), blend);
+    });
     C::from_channels(out)
 }
 
@@ -239,21 +260,18 @@ fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
 /// blend lies between its two values and so within its field.
 #[inline(always)]
 fn over_565(source: u16, under: u16, opacity: u8) -> u16 {
+    /// A named function, not a closure: at `opt-level = "z"` a closure called three times
+    /// stays a call.
+    #[inline(always)]
+    fn blend(s: i32, d: i32, a: i32) -> i32 {
+        d + (((s - d) * a + 128) >> 8)
+    }
     let a = i32::from(opacity) + i32::from(opacity >> 7);
-    let blend = |s: i32, d: i32| d + (((s - d) * a + 128) >> 8);
     let (s, d) = (i32::from(source), i32::from(under));
-    let high = blend(s >> 11, d >> 11);
-    let middle = blend((s >> 5) & 63, (d >> 5) & 63);
-    let low = blend(s & 31, d & 31);
+    let high = blend(s >> 11, d >> 11, a);
+    let middle = blend((s >> 5) & 63, (d >> 5) & 63, a);
+    let low = blend(s & 31, d & 31, a);
     ((high << 11) | (middle << 5) | low) as u16
-}
-
-/// `[f(0), f(1), ..., f(N - 1)]`, written out for up to four channels (see [`for_each_slot`]).
-#[inline(always)]
-pub(crate) fn per_channel<T: Copy + Default, const N: usize>(f: impl FnMut(usize) -> T) -> [T; N] {
-    let mut out = [T::default(); N];
-    for_each_slot(&mut out, f);
-    out
 }
 
 macro_rules! rgb_channels {

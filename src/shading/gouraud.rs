@@ -459,11 +459,11 @@ where
         } else {
             0
         };
-        let color = C::from_channels(per_channel(|k| {
+        let color = C::from_channels(per_channel!(N, |k| {
             (values[k].wrapping_add(threshold) >> 16) as u8
         }));
         *x = x.wrapping_add(1);
-        *values = per_channel(|k| values[k].wrapping_add(step[k]));
+        *values = per_channel!(N, |k| values[k].wrapping_add(step[k]));
         color
     }
 }
@@ -673,7 +673,7 @@ where
 
     #[inline(always)]
     fn next(&self, (lanes, step): &mut Self::State) -> C {
-        let channels = per_channel(|k| Self::level(*lanes, k));
+        let channels = per_channel!(N, |k| Self::level(*lanes, k));
         *lanes = lanes.wrapping_add(*step);
         C::from_channels(channels)
     }
@@ -812,7 +812,7 @@ where
 
     #[inline(always)]
     fn next(&self, (lanes, steps): &mut Self::State) -> C {
-        let channels = per_channel(|k| PackedShader::<C, N>::level(*lanes, k));
+        let channels = per_channel!(N, |k| PackedShader::<C, N>::level(*lanes, k));
         *lanes = lanes.wrapping_add(steps[0]);
         // Spelled out: `rotate_left` is a call to the slice rotation.
         *steps = [steps[1], steps[2], steps[3], steps[0]];

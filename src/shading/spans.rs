@@ -152,7 +152,7 @@ where
 {
     let color = shade(*position, *values);
     position.x = position.x.wrapping_add(1);
-    *values = per_channel(|k| values[k].wrapping_add(step[k]));
+    *values = per_channel!(N, |k| values[k].wrapping_add(step[k]));
     color
 }
 

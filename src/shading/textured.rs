@@ -1014,7 +1014,7 @@ where
         state.v = sampler.v.advance(state.v, sampler.dv);
         if holds(TINT, self.tinted) {
             let factors = state.tint;
-            state.tint = per_channel(|k| factors[k].wrapping_add(state.tint_step[k]));
+            state.tint = per_channel!(M, |k| factors[k].wrapping_add(state.tint_step[k]));
             modulate(texel, factors)
         } else {
             texel
@@ -1029,7 +1029,7 @@ where
     C: ChannelColor<Channels = [u8; M]>,
 {
     let channels = texel.channels();
-    C::from_channels(per_channel(|k| {
+    C::from_channels(per_channel!(M, |k| {
         // Interpolation may overshoot 0 or 1 by a unit; a wrapped negative factor is huge.
         let factor = (factors[k] as i32).clamp(0, 1 << 16) as u32;
         ((u32::from(channels[k]) * factor + (1 << 15)) >> 16) as u8
