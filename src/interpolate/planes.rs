@@ -1062,7 +1062,14 @@ fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
 #[cfg_attr(not(target_has_atomic = "32"), inline(never))]
 #[cfg_attr(target_has_atomic = "32", inline(always))]
 fn numerators_wide(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
-    let [ex1, ey1, ex2, ey2] = e.map(i64::from);
+    // Not `e.map(i64::from)`: at `opt-level = "s"` that stayed a call per plane.
+    let [ex1, ey1, ex2, ey2] = e;
+    let (ex1, ey1, ex2, ey2) = (
+        i64::from(ex1),
+        i64::from(ey1),
+        i64::from(ex2),
+        i64::from(ey2),
+    );
     [da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]
 }
 

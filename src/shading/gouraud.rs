@@ -582,14 +582,23 @@ where
         least
     };
 
+    /// Pixels from the planes' origin within which the lanes stay exact enough ([`reach`]): a
+    /// constant, not a call at run time (at `opt-level = "s"` it was one).
+    const REACH: u32 = reach(Self::LEAST_FRACTION);
+
     /// Values of the planes (2^-32 units, wrapping) as the lanes' integer, each rounded down
     /// to its lane's units.
     #[inline(always)]
     fn pack(values: &[i64; N]) -> u64 {
+        // Each lane's shifts by constants: in a loop (kept at `opt-level = "s"`) they were
+        // variable 64-bit shifts, library calls on Cortex-M0.
+        let lanes: [u64; N] = per_channel!(N, |k| {
+            ((values[k] >> (32 - Self::FRACTION[k])) as u64) << Self::STARTS[k]
+        });
         let mut packed = 0u64;
+        // Indexed: an array's `into_iter` stayed calls at `opt-level = "s"`.
         for k in 0..N {
-            let lane = values[k] >> (32 - Self::FRACTION[k]);
-            packed = packed.wrapping_add((lane as u64) << Self::STARTS[k]);
+            packed = packed.wrapping_add(lanes[k]);
         }
         packed
     }
@@ -615,7 +624,7 @@ where
             near(origin.x, window.top_left.x, window.size.width)
                 && near(origin.y, window.top_left.y, window.size.height)
         };
-        let reach = reach(Self::LEAST_FRACTION);
+        let reach = Self::REACH;
         // Dithered lanes add thresholds up to 31/32 of a level: an eighth of the reach keeps
         // their roundings under 1/64 of a level, so the sums stay inside their lanes.
         Self::FITS && within(reach) && (!dither || within(reach / 8))
