@@ -8,6 +8,7 @@ use common::{
     reference_covers, reference_pixels, window_contains, window_points, CountingTarget, Offset,
     Rule,
 };
+use embedded_graphics::primitives::PointsIter;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use trirast::{coverage::for_each_span, coverage::Span, FlatStyle, Triangle, FAST_LIMIT};
@@ -169,6 +170,94 @@ proptest! {
     fn coverage_matches_exact_reference((window, v) in case()) {
         check_case(window, v)?;
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(3000))]
+
+    /// `Triangle::points` (embedded-graphics' `PointsIter`) of triangles within 40 pixels of
+    /// the origin: every pixel the top-left rule covers, row by row, left to right.
+    #[test]
+    fn points_are_the_covered_pixels(v in [point(-40..=40), point(-40..=40), point(-40..=40)]) {
+        let window = Rectangle::new(Point::new(-41, -41), Size::new(83, 83));
+        let want = reference_pixels(v, &window, Rule::TopLeft);
+        let got: Vec<Point> = Triangle { vertices: v }.points().collect();
+        prop_assert_eq!(got, want, "triangle {:?}", v);
+    }
+
+    /// Triangles anywhere in the `i32` plane, up to its ends, a few thousand rows tall (the
+    /// iterator visits every row between the top and bottom vertex, empty ones too): the first
+    /// points are covered pixels, in order, with nothing covered just before the first.
+    #[test]
+    fn points_anywhere_come_in_order(
+        corner in (any::<i32>(), any::<i32>()),
+        offsets in [(-2000..2000i32, -2000..2000i32), (-2000..2000i32, -2000..2000i32)],
+    ) {
+        let a = Point::new(corner.0, corner.1);
+        let at = |(dx, dy): (i32, i32)| Point::new(a.x.saturating_add(dx), a.y.saturating_add(dy));
+        check_points(&[a, at(offsets[0]), at(offsets[1])])?;
+    }
+}
+
+/// The first points of `v` are covered pixels in row-major order, and the pixels just before
+/// the first (left of it in its row, and in the three rows above) are not covered.
+fn check_points(v: &[Point; 3]) -> Result<(), TestCaseError> {
+    let v = *v;
+    let got: Vec<Point> = Triangle { vertices: v }.points().take(300).collect();
+    for p in &got {
+        prop_assert!(reference_covers(v, *p, Rule::TopLeft), "{:?} in {:?}", p, v);
+    }
+    for pair in got.windows(2) {
+        prop_assert!(
+            (pair[0].y, pair[0].x) < (pair[1].y, pair[1].x),
+            "{:?}",
+            pair
+        );
+    }
+    if let Some(first) = got.first() {
+        let row = Rectangle::new(
+            Point::new(first.x.saturating_sub(20), first.y),
+            Size::new(20, 1),
+        );
+        let above = Rectangle::new(
+            Point::new(first.x.saturating_sub(10), first.y.saturating_sub(3)),
+            Size::new(21, 3),
+        );
+        for p in window_points(&row).chain(window_points(&above)) {
+            if (p.y, p.x) < (first.y, first.x) {
+                prop_assert!(
+                    !reference_covers(v, p, Rule::TopLeft),
+                    "{:?} before {:?} in {:?}",
+                    p,
+                    first,
+                    v
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The points of triangles reaching the ends of `i32` (not slivers: their rows fill quickly).
+#[test]
+fn points_at_the_ends_of_the_range() {
+    let (lo, hi) = (i32::MIN, i32::MAX);
+    for v in [
+        [Point::new(lo, lo), Point::new(hi, lo), Point::new(lo, hi)],
+        [Point::new(hi, hi), Point::new(lo, hi), Point::new(hi, lo)],
+        [Point::new(0, lo), Point::new(hi, hi), Point::new(lo, hi)],
+        [Point::new(lo, 0), Point::new(hi, -5), Point::new(hi, 5)],
+    ] {
+        check_points(&v).unwrap();
+        assert_eq!(
+            Triangle { vertices: v }.points().take(300).count(),
+            300,
+            "{v:?}"
+        );
+    }
+    // Degenerate: nothing.
+    let line = [Point::new(lo, lo), Point::new(0, 0), Point::new(hi, hi)];
+    assert_eq!(Triangle { vertices: line }.points().next(), None);
 }
 
 /// Hand-picked cases around the edges of the algorithm, checked the same way.

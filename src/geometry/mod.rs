@@ -7,5 +7,5 @@ mod viewport;
 
 pub use shape::Shape;
 pub use subpixel::{SubPixelTriangle, SubPoint};
-pub use triangle::{Orientation, Triangle};
+pub use triangle::{Orientation, Points, Triangle};
 pub use viewport::{Projected, Viewport};

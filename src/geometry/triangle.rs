@@ -4,13 +4,13 @@ use core::cmp::Ordering;
 
 use embedded_graphics::{
     geometry::{Dimensions, Point, Size},
-    primitives::{self, ContainsPoint, Primitive, Rectangle},
+    primitives::{self, ContainsPoint, PointsIter, Primitive, Rectangle},
     transform::Transform,
 };
 
 use crate::{
-    coverage::FillRule,
-    setup::{fits_fast_path, Lane},
+    coverage::{ExactSpans, FillRule},
+    setup::{fits_fast_path, sort_top_to_bottom, Lane},
 };
 
 /// A triangle with integer vertices, in pixel coordinates (`y` grows downwards).
@@ -239,6 +239,81 @@ impl From<Triangle> for primitives::Triangle {
     fn from(triangle: Triangle) -> Self {
         let [a, b, c] = triangle.vertices;
         primitives::Triangle::new(a, b, c)
+    }
+}
+
+impl PointsIter for Triangle {
+    type Iter = Points;
+
+    /// The pixels the default top-left rule draws, row by row from the top, left to right in
+    /// each: what [`ContainsPoint::contains`] accepts, one at a time, for any `i32` vertices.
+    /// For drawing, styles and [`for_each_span`](crate::coverage::for_each_span) hand out
+    /// whole rows and step their edges instead, which is faster; this iterator computes each
+    /// row's ends exactly from the edges in 64-bit arithmetic, visiting every row from the top
+    /// vertex to the bottom one, empty ones too (a sliver billions of rows tall takes that
+    /// long to iterate).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::PointsIter};
+    /// use trirast::Triangle;
+    ///
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(3, 0), Point::new(0, 3));
+    /// let points: Vec<Point> = t.points().collect();
+    /// assert_eq!(points, [(0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (0, 2)].map(Point::from));
+    /// ```
+    fn points(&self) -> Points {
+        // Every pixel: the top-left rule never covers column or row i32::MAX (a triangle's
+        // rightmost and lowest points lie on edges that leave their samples out), which the
+        // window's exclusive end leaves out.
+        let everything = Rectangle::new(
+            Point::new(i32::MIN, i32::MIN),
+            Size::new(u32::MAX, u32::MAX),
+        );
+        Points {
+            spans: ExactSpans::new(
+                sort_top_to_bottom(self.vertices),
+                FillRule::TopLeft,
+                &everything,
+            ),
+            span: None,
+        }
+    }
+}
+
+/// The pixels of a [`Triangle`] under the top-left rule, from [`PointsIter::points`].
+///
+/// # Examples
+///
+/// ```
+/// use embedded_graphics::{prelude::*, primitives::PointsIter};
+/// use trirast::{geometry::Points, Triangle};
+///
+/// let mut points: Points = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8)).points();
+/// assert_eq!(points.next(), Some(Point::new(0, 0)));
+/// assert_eq!(points.count(), 35); // 36 pixels in all
+/// ```
+#[derive(Clone, Debug)]
+pub struct Points {
+    spans: ExactSpans,
+    /// The rest of the current row: its next pixel and how many are left (at least one).
+    span: Option<(Point, u32)>,
+}
+
+impl Iterator for Points {
+    type Item = Point;
+
+    fn next(&mut self) -> Option<Point> {
+        let (point, left) = if let Some(rest) = self.span {
+            rest
+        } else {
+            let span = self.spans.next()?;
+            (Point::new(span.x, span.y), span.len)
+        };
+        // The pixel after the row's last may lie past i32::MAX: it is never read.
+        self.span = (left > 1).then(|| (Point::new(point.x.wrapping_add(1), point.y), left - 1));
+        Some(point)
     }
 }
 
