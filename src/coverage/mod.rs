@@ -357,7 +357,6 @@ pub(crate) fn walk_erased<E>(
 
 /// The rows a triangle covers inside a window, and how its edges round there: what the fast
 /// and the wide walk share.
-#[derive(Copy, Clone, Debug)]
 struct RowPlan<T> {
     triangle: Prepared<T>,
     clip: Clip<T>,
@@ -418,23 +417,18 @@ impl<T: Lane> RowPlan<T> {
     /// Emits the span between bounds `l` and `r` on `row`, clipped to the window, if any.
     #[inline(always)]
     fn emit<K: SpanSink + ?Sized>(&self, l: T, r: T, row: T, sink: &mut K) -> Result<(), K::Error> {
-        match self.clipped(l, r, row) {
-            Some(span) => sink.span(span),
-            None => Ok(()),
-        }
-    }
-
-    /// The span between bounds `l` and `r` on `row`, clipped to the window, if any is left.
-    #[inline(always)]
-    fn clipped(&self, l: T, r: T, row: T) -> Option<Span> {
         let l = l.max(self.clip.x0);
         let r = r.min(self.clip.x1);
-        // Values inside the window, whose coordinates and width fit.
-        (l < r).then(|| Span {
-            x: l.to_i64() as i32,
-            y: row.to_i64() as i32,
-            len: T::len_u32(r, l),
-        })
+        if l < r {
+            // Values inside the window, whose coordinates and width fit.
+            let span = Span {
+                x: l.to_i64() as i32,
+                y: row.to_i64() as i32,
+                len: T::len_u32(r, l),
+            };
+            sink.span(span)?;
+        }
+        Ok(())
     }
 }
 
@@ -511,8 +505,27 @@ fn walk_fast<K: SpanSink + ?Sized>(
     }
 }
 
-/// The wide walk, for vertices beyond the fast range: [`ExactSpans`], out of line and
-/// type-erased.
+/// The span of the triangle `sorted` (by [`sort_top_to_bottom`]) on `row` under `rule`, over
+/// every column but `i32::MAX` (which the top-left rule never covers): one row of the wide
+/// walk, for [`Triangle::points`](crate::Triangle), so that drawing links no other code for it.
+pub(crate) fn row_span(sorted: [Point; 3], rule: FillRule, row: i32) -> Option<Span> {
+    let [a, b, c] = sorted;
+    let mut found = None;
+    // The window: every column from i32::MIN (a width of u32::MAX, passed as -1), one row.
+    let _ = walk_wide(
+        [a.x, a.y, b.x, b.y, c.x, c.y],
+        rule,
+        [i32::MIN, row, -1, 1],
+        &mut |span| {
+            found = Some(span);
+            Ok(())
+        },
+    );
+    found
+}
+
+/// The wide walk, for vertices beyond the fast range: 64-bit arithmetic, each row's bounds
+/// computed exactly from the edge's start (no stepping state), out of line and type-erased.
 #[inline(never)]
 #[cold]
 fn walk_wide(
@@ -530,79 +543,32 @@ fn walk_wide(
         Point::new(clip[0], clip[1]),
         Size::new(clip[2] as u32, clip[3] as u32),
     );
-    ExactSpans::new(sorted, rule, &clip).try_for_each(sink)
-}
-
-/// The spans of a triangle inside a window, top to bottom, in 64-bit arithmetic, each row's
-/// bounds computed exactly from the edges' starts (no stepping state): the wide walk's, and
-/// the source of [`Triangle::points`](crate::Triangle)' points.
-#[derive(Clone, Debug)]
-pub(crate) struct ExactSpans(Option<ExactRows>);
-
-/// [`ExactSpans`] of a triangle with rows inside the window.
-#[derive(Clone, Debug)]
-struct ExactRows {
-    plan: RowPlan<i64>,
-    long: ExactEdge<i64>,
-    /// The short edges above and below the middle vertex.
-    upper: ExactEdge<i64>,
-    lower: ExactEdge<i64>,
-    /// The next row.
-    row: i64,
-}
-
-impl ExactSpans {
-    /// The spans of the triangle `sorted` (by [`sort_top_to_bottom`]) under `rule` inside
-    /// `clip`.
-    pub(crate) fn new(sorted: [Point; 3], rule: FillRule, clip: &Rectangle) -> Self {
-        let Some(plan) =
-            Clip::from_rectangle(clip).and_then(|clip| RowPlan::<i64>::new(sorted, rule, clip))
-        else {
-            return Self(None);
-        };
-        let [top, middle, bottom] = plan.triangle.sorted;
-        let long = ExactEdge::new(top, bottom, plan.long_rounding);
-        // A flat top or bottom leaves its short edge unused: the long edge stands in.
-        let short = |upper: (i64, i64), lower: (i64, i64)| {
-            if upper.1 < lower.1 {
-                ExactEdge::new(upper, lower, plan.short_rounding)
-            } else {
-                long
-            }
-        };
-        Self(Some(ExactRows {
-            plan,
-            long,
-            upper: short(top, middle),
-            lower: short(middle, bottom),
-            row: plan.first,
-        }))
-    }
-}
-
-impl Iterator for ExactSpans {
-    type Item = Span;
-
-    fn next(&mut self) -> Option<Span> {
-        let rows = self.0.as_mut()?;
-        let plan = &rows.plan;
-        while rows.row < plan.end {
-            let row = rows.row;
-            rows.row += 1;
-            let short = if row < plan.switch {
-                &rows.upper
-            } else {
-                &rows.lower
-            };
-            let (l, r) = if plan.triangle.long_edge_left {
-                (rows.long.at(row), short.at(row))
-            } else {
-                (short.at(row), rows.long.at(row))
-            };
-            if let Some(span) = plan.clipped(l, r, row) {
-                return Some(span);
-            }
+    let Some(plan) =
+        Clip::from_rectangle(&clip).and_then(|clip| RowPlan::<i64>::new(sorted, rule, clip))
+    else {
+        return Ok(());
+    };
+    let [top, middle, bottom] = plan.triangle.sorted;
+    let long = ExactEdge::new(top, bottom, plan.long_rounding);
+    // A flat top or bottom leaves its short edge unused: the long edge stands in.
+    let short = |upper: (i64, i64), lower: (i64, i64)| {
+        if upper.1 < lower.1 {
+            ExactEdge::new(upper, lower, plan.short_rounding)
+        } else {
+            long
         }
-        None
+    };
+    let (upper, lower) = (short(top, middle), short(middle, bottom));
+    let mut row = plan.first;
+    while row < plan.end {
+        let short = if row < plan.switch { &upper } else { &lower };
+        let (l, r) = if plan.triangle.long_edge_left {
+            (long.at(row), short.at(row))
+        } else {
+            (short.at(row), long.at(row))
+        };
+        plan.emit(l, r, row, sink)?;
+        row += 1;
     }
+    Ok(())
 }

@@ -9,7 +9,7 @@ use embedded_graphics::{
 };
 
 use crate::{
-    coverage::{ExactSpans, FillRule},
+    coverage::{row_span, FillRule},
     setup::{fits_fast_path, sort_top_to_bottom, Lane},
 };
 
@@ -248,10 +248,10 @@ impl PointsIter for Triangle {
     /// The pixels the default top-left rule draws, row by row from the top, left to right in
     /// each: what [`ContainsPoint::contains`] accepts, one at a time, for any `i32` vertices.
     /// For drawing, styles and [`for_each_span`](crate::coverage::for_each_span) hand out
-    /// whole rows and step their edges instead, which is faster; this iterator computes each
-    /// row's ends exactly from the edges in 64-bit arithmetic, visiting every row from the top
-    /// vertex to the bottom one, empty ones too (a sliver billions of rows tall takes that
-    /// long to iterate).
+    /// whole rows and step their edges instead, which is much faster; this iterator sets up
+    /// each row's ends exactly from the vertices in 64-bit arithmetic (a few divisions a row),
+    /// visiting every row from the top vertex to the bottom one, empty ones too (a sliver
+    /// billions of rows tall takes that long to iterate).
     ///
     /// # Examples
     ///
@@ -264,19 +264,17 @@ impl PointsIter for Triangle {
     /// assert_eq!(points, [(0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (0, 2)].map(Point::from));
     /// ```
     fn points(&self) -> Points {
-        // Every pixel: the top-left rule never covers column or row i32::MAX (a triangle's
-        // rightmost and lowest points lie on edges that leave their samples out), which the
-        // window's exclusive end leaves out.
-        let everything = Rectangle::new(
-            Point::new(i32::MIN, i32::MIN),
-            Size::new(u32::MAX, u32::MAX),
-        );
+        let sorted = sort_top_to_bottom(self.vertices);
+        // Rows from the top vertex's to the bottom one's (whose own row the top-left rule
+        // leaves out); none for a degenerate triangle.
+        let rows = if self.is_degenerate() {
+            0..0
+        } else {
+            i64::from(sorted[0].y)..i64::from(sorted[2].y)
+        };
         Points {
-            spans: ExactSpans::new(
-                sort_top_to_bottom(self.vertices),
-                FillRule::TopLeft,
-                &everything,
-            ),
+            sorted,
+            rows,
             span: None,
         }
     }
@@ -296,7 +294,10 @@ impl PointsIter for Triangle {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Points {
-    spans: ExactSpans,
+    /// The vertices, top to bottom.
+    sorted: [Point; 3],
+    /// The rows not yet visited.
+    rows: core::ops::Range<i64>,
     /// The rest of the current row: its next pixel and how many are left (at least one).
     span: Option<(Point, u32)>,
 }
@@ -308,8 +309,13 @@ impl Iterator for Points {
         let (point, left) = if let Some(rest) = self.span {
             rest
         } else {
-            let span = self.spans.next()?;
-            (Point::new(span.x, span.y), span.len)
+            loop {
+                // Rows lie between two vertices' rows, so within i32.
+                let row = self.rows.next()? as i32;
+                if let Some(span) = row_span(self.sorted, FillRule::TopLeft, row) {
+                    break (Point::new(span.x, span.y), span.len);
+                }
+            }
         };
         // The pixel after the row's last may lie past i32::MAX: it is never read.
         self.span = (left > 1).then(|| (Point::new(point.x.wrapping_add(1), point.y), left - 1));
