@@ -73,6 +73,7 @@ mod setup;
 pub mod shading;
 pub mod target;
 pub mod texture;
+mod unroll;
 
 pub use coverage::FillRule;
 pub use error::Error;

@@ -5,11 +5,11 @@ use core::marker::PhantomData;
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{
-    channels::per_channel,
     paint::{drawable_style, stored, PaintVisitor, Painter},
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
+use crate::unroll::per_channel;
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,

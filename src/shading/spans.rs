@@ -2,7 +2,8 @@
 
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
-use super::{channels::per_channel, paint::stored};
+use super::paint::stored;
+use crate::unroll::per_channel;
 use crate::{
     coverage::Span,
     geometry::Shape,
