@@ -9,7 +9,7 @@ use common::{exact_plane, jittered_grid, reference_covers, window_points, Record
 use embedded_graphics::{
     pixelcolor::{Gray8, GrayColor, Rgb565},
     prelude::*,
-    primitives::Rectangle,
+    primitives::{PointsIter, Rectangle},
 };
 use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
@@ -152,6 +152,52 @@ proptest! {
         for_each_span(&whole, rule.to_crate(), &window, |s| { a.push(s); Ok::<(), ()>(()) }).unwrap();
         for_each_subpixel_span(&t, rule.to_crate(), &window, |s| { b.push(s); Ok::<(), ()>(()) }).unwrap();
         prop_assert_eq!(a, b);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// `SubPixelTriangle::points` (embedded-graphics' `PointsIter`) of triangles within 40
+    /// pixels of the origin: every pixel the exact reference covers under the top-left rule,
+    /// row by row, left to right.
+    #[test]
+    fn points_are_the_covered_pixels(
+        raw in [
+            (-40 * 256..40 * 256i32, -40 * 256..40 * 256i32),
+            (-40 * 256..40 * 256i32, -40 * 256..40 * 256i32),
+            (-40 * 256..40 * 256i32, -40 * 256..40 * 256i32),
+        ],
+    ) {
+        let v = raw.map(|(x, y)| Point::new(x, y));
+        let window = Rectangle::new(Point::new(-41, -41), Size::new(83, 83));
+        let want: Vec<Point> = window_points(&window)
+            .filter(|p| reference_covers(v, Point::new(p.x * 256, p.y * 256), Rule::TopLeft))
+            .collect();
+        let got: Vec<Point> = sub(raw).points().collect();
+        prop_assert_eq!(got, want, "{:?}", raw);
+    }
+
+    /// Anywhere in the type's range, a few thousand rows tall: the first points are covered,
+    /// in order.
+    #[test]
+    fn points_anywhere_come_in_order(
+        corner in (any::<i32>(), any::<i32>()),
+        offsets in [
+            (-500_000..500_000i32, -500_000..500_000i32),
+            (-500_000..500_000i32, -500_000..500_000i32),
+        ],
+    ) {
+        let at = |(dx, dy): (i32, i32)| (corner.0.saturating_add(dx), corner.1.saturating_add(dy));
+        let raw = [corner, at(offsets[0]), at(offsets[1])];
+        let t = sub(raw);
+        let got: Vec<Point> = t.points().take(300).collect();
+        for p in &got {
+            prop_assert!(t.covers(*p, trirast::FillRule::TopLeft), "{:?} in {:?}", p, raw);
+        }
+        for pair in got.windows(2) {
+            prop_assert!((pair[0].y, pair[0].x) < (pair[1].y, pair[1].x), "{:?}", pair);
+        }
     }
 }
 

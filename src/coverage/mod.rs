@@ -18,7 +18,7 @@ use embedded_graphics::{
 pub use fill_rule::FillRule;
 
 pub(crate) use area::{walk_coverage, walk_subpixel_coverage, CoverageSink};
-pub(crate) use subpixel::walk_subpixel;
+pub(crate) use subpixel::{subpixel_row_span, walk_subpixel};
 
 /// Calls `emit` with every span of the sub-pixel `triangle` inside `clip`, top to bottom, one
 /// per row: pixel `(x, y)` is covered when the point `(x, y)` lies inside the exact triangle

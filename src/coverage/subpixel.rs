@@ -226,6 +226,23 @@ pub(crate) fn walk_subpixel<K: SpanSink + ?Sized>(
     }
 }
 
+/// The span of `triangle` on `row` under `rule`, over every column but `i32::MAX`: one row of
+/// the walk, for [`SubPixelTriangle`]'s points, through a sink behind `dyn` (one copy).
+pub(crate) fn subpixel_row_span(
+    triangle: &SubPixelTriangle,
+    rule: FillRule,
+    row: i32,
+) -> Option<Span> {
+    let mut found = None;
+    let window = Rectangle::new(Point::new(i32::MIN, row), Size::new(u32::MAX, 1));
+    let sink: &mut dyn SpanSink<Error = ()> = &mut |span| {
+        found = Some(span);
+        Ok(())
+    };
+    let _ = walk_subpixel(triangle, rule, &window, sink);
+    found
+}
+
 /// Coordinates in `-NARROW_LIMIT..NARROW_LIMIT` (and heights under 2^23) walk in 32 bits.
 const NARROW_LIMIT: i32 = 1 << 30;
 

@@ -2,12 +2,12 @@
 
 use embedded_graphics::{
     geometry::{Dimensions, Point, Size},
-    primitives::{ContainsPoint, Primitive, Rectangle},
+    primitives::{ContainsPoint, PointsIter, Primitive, Rectangle},
     transform::Transform,
 };
 use fixed::types::{I16F16, I24F8};
 
-use super::{triangle::half_space_covers, Orientation, Triangle};
+use super::{triangle::half_space_covers, Orientation, Points, Triangle};
 use crate::coverage::FillRule;
 
 /// A point with 8 fraction bits: 1/256 of a pixel, as Direct3D's 16.8 vertices, over
@@ -269,6 +269,39 @@ impl SubPixelTriangle {
             .map(|p| (i128::from(p.x.to_bits()), i128::from(p.y.to_bits())));
         let sample = (i128::from(point.x) << 8, i128::from(point.y) << 8);
         half_space_covers(vertices, sample, rule)
+    }
+}
+
+impl PointsIter for SubPixelTriangle {
+    type Iter = Points;
+
+    /// The pixels the default top-left rule draws, row by row from the top, left to right in
+    /// each, for any vertices: as [`Triangle`]'s points (each row set up again: for
+    /// convenience, drawing takes spans).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{prelude::*, primitives::PointsIter};
+    /// use fixed::types::I24F8;
+    /// use trirast::geometry::{SubPixelTriangle, SubPoint};
+    ///
+    /// let at = |x: f32, y: f32| SubPoint::new(I24F8::from_num(x), I24F8::from_num(y));
+    /// let t = SubPixelTriangle::new(at(0.5, 0.0), at(4.0, 0.0), at(0.5, 3.5));
+    /// let points: Vec<Point> = t.points().collect();
+    /// assert_eq!(points, [(1, 0), (2, 0), (3, 0), (1, 1), (2, 1), (1, 2)].map(Point::from));
+    /// ```
+    fn points(&self) -> Points {
+        let ys = self.vertices.map(|p| i64::from(p.y.to_bits()));
+        let (top, bottom) = (ys[0].min(ys[1]).min(ys[2]), ys[0].max(ys[1]).max(ys[2]));
+        // Rows whose samples lie from the top vertex down to the bottom one; none for a
+        // degenerate triangle.
+        let rows = if self.is_degenerate() {
+            0..0
+        } else {
+            (top + 255) >> 8..(bottom >> 8) + 1
+        };
+        Points::of_subpixel(*self, rows)
     }
 }
 

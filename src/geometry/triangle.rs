@@ -8,8 +8,9 @@ use embedded_graphics::{
     transform::Transform,
 };
 
+use super::SubPixelTriangle;
 use crate::{
-    coverage::{row_span, FillRule},
+    coverage::{row_span, subpixel_row_span, FillRule},
     setup::{fits_fast_path, sort_top_to_bottom, Lane},
 };
 
@@ -273,14 +274,15 @@ impl PointsIter for Triangle {
             i64::from(sorted[0].y)..i64::from(sorted[2].y)
         };
         Points {
-            sorted,
+            triangle: PointsOf::Whole(sorted),
             rows,
             span: None,
         }
     }
 }
 
-/// The pixels of a [`Triangle`] under the top-left rule, from [`PointsIter::points`].
+/// The pixels of a [`Triangle`] or a [`SubPixelTriangle`](super::SubPixelTriangle) under the
+/// top-left rule, from [`PointsIter::points`].
 ///
 /// # Examples
 ///
@@ -294,12 +296,30 @@ impl PointsIter for Triangle {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Points {
-    /// The vertices, top to bottom.
-    sorted: [Point; 3],
+    triangle: PointsOf,
     /// The rows not yet visited.
     rows: core::ops::Range<i64>,
     /// The rest of the current row: its next pixel and how many are left (at least one).
     span: Option<(Point, u32)>,
+}
+
+impl Points {
+    /// The points of `triangle` on `rows`.
+    pub(super) fn of_subpixel(triangle: SubPixelTriangle, rows: core::ops::Range<i64>) -> Self {
+        Self {
+            triangle: PointsOf::SubPixel(triangle),
+            rows,
+            span: None,
+        }
+    }
+}
+
+/// Whose points [`Points`] lists.
+#[derive(Clone, Debug)]
+enum PointsOf {
+    /// A [`Triangle`]'s vertices, top to bottom.
+    Whole([Point; 3]),
+    SubPixel(SubPixelTriangle),
 }
 
 impl Iterator for Points {
@@ -312,7 +332,13 @@ impl Iterator for Points {
             loop {
                 // Rows lie between two vertices' rows, so within i32.
                 let row = self.rows.next()? as i32;
-                if let Some(span) = row_span(self.sorted, FillRule::TopLeft, row) {
+                let span = match &self.triangle {
+                    PointsOf::Whole(sorted) => row_span(*sorted, FillRule::TopLeft, row),
+                    PointsOf::SubPixel(triangle) => {
+                        subpixel_row_span(triangle, FillRule::TopLeft, row)
+                    }
+                };
+                if let Some(span) = span {
                     break (Point::new(span.x, span.y), span.len);
                 }
             }
