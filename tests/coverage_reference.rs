@@ -136,6 +136,31 @@ fn check_case(window: Rectangle, v: [Point; 3]) -> Result<(), TestCaseError> {
             window
         );
 
+        // The same rows through a window spanning every column but the last (2^32 - 1 wide,
+        // from i32::MIN): the spans, cut to the window's columns, give the same pixels.
+        let wide = Rectangle::new(
+            Point::new(i32::MIN, window.top_left.y),
+            Size::new(u32::MAX, window.size.height),
+        );
+        let (x0, x1) = (
+            i64::from(window.top_left.x),
+            i64::from(window.top_left.x) + i64::from(window.size.width),
+        );
+        let mut got_wide = Vec::new();
+        for s in spans_of(v, &wide, rule) {
+            let (from, to) = (i64::from(s.x), i64::from(s.x) + i64::from(s.len));
+            got_wide.extend((from.max(x0)..to.min(x1)).map(|x| Point::new(x as i32, s.y)));
+        }
+        // Such a window ends (exclusively) at column i32::MAX, which it leaves out.
+        let want_wide: Vec<Point> = want.iter().copied().filter(|p| p.x != i32::MAX).collect();
+        prop_assert_eq!(
+            &got_wide,
+            &want_wide,
+            "rule {:?}, triangle {:?}, every column",
+            rule,
+            v
+        );
+
         // Through `Drawable` into a target placed at the window: same pixels, each once.
         let mut target = Offset(CountingTarget::new(window));
         let style = FlatStyle::new(BinaryColor::On).with_fill_rule(rule.to_crate());
@@ -236,6 +261,25 @@ fn check_points(v: &[Point; 3]) -> Result<(), TestCaseError> {
         }
     }
     Ok(())
+}
+
+/// A window covering the whole `i32` plane (wider than `i32::MAX`): a small triangle's pixels,
+/// all of them.
+#[test]
+fn a_window_over_the_whole_plane() {
+    let everything = Rectangle::new(
+        Point::new(i32::MIN, i32::MIN),
+        Size::new(u32::MAX, u32::MAX),
+    );
+    let v = [Point::new(0, 0), Point::new(8, 0), Point::new(0, 8)];
+    let around = Rectangle::new(Point::new(-1, -1), Size::new(10, 10));
+    for rule in [Rule::TopLeft, Rule::Inclusive] {
+        let mut got = Vec::new();
+        for s in spans_of(v, &everything, rule) {
+            got.extend((0..s.len).map(|i| Point::new(s.x + i as i32, s.y)));
+        }
+        assert_eq!(got, reference_pixels(v, &around, rule), "{rule:?}");
+    }
 }
 
 /// The points of triangles reaching the ends of `i32` (not slivers: their rows fill quickly).

@@ -102,12 +102,18 @@ impl<T: Lane> Clip<T> {
 }
 
 impl Clip<i32> {
-    /// The window of a rectangle for the fast lane, or `None` when it holds no pixel: plain
-    /// 32-bit arithmetic, ends saturated at `i32::MAX`. No clamping to the lane is needed:
-    /// fast-lane edges lie within ±2^30 + 1, so a bound beyond only ever loses a `max`/`min`.
+    /// The window of a rectangle for the fast lane, or `None` when it holds no pixel: bounds
+    /// in 32 bits, ends saturated at `i32::MAX`. No clamping to the lane is needed: fast-lane
+    /// edges lie within ±2^30 + 1, so a bound beyond only ever loses a `max`/`min`.
     #[inline(always)]
     pub(crate) fn fast(area: &Rectangle) -> Option<Self> {
-        let end = |start: i32, len: u32| start.saturating_add(len.min(i32::MAX as u32) as i32);
+        // The end from the whole length, summed in 64 bits: a window from i32::MIN may be up
+        // to 2^32 - 1 wide (clamping the length to i32::MAX first ended such a window at -1,
+        // and drew nothing right of it). `saturating_add_unsigned` measured 9 to 12% more per
+        // flat triangle on Cortex-M4F; this sum +0.2 to +0.3% for Gouraud + depth.
+        let end = |start: i32, len: u32| {
+            (i64::from(start) + i64::from(len)).min(i64::from(i32::MAX)) as i32
+        };
         let (x0, y0) = (area.top_left.x, area.top_left.y);
         let (x1, y1) = (end(x0, area.size.width), end(y0, area.size.height));
         (x0 < x1 && y0 < y1).then_some(Self { x0, x1, y0, y1 })
