@@ -7,7 +7,10 @@ use embedded_graphics::{
 };
 use fixed::types::{I16F16, I24F8};
 
-use super::{triangle::half_space_covers, Orientation, Points, Triangle};
+use super::{
+    triangle::{half_space_covers, PointsOf},
+    Orientation, Points, Triangle,
+};
 use crate::coverage::FillRule;
 
 /// A point with 8 fraction bits: 1/256 of a pixel, as Direct3D's 16.8 vertices, over
@@ -301,7 +304,7 @@ impl PointsIter for SubPixelTriangle {
         } else {
             (top + 255) >> 8..(bottom >> 8) + 1
         };
-        Points::of_subpixel(*self, rows)
+        Points::new(PointsOf::SubPixel(*self), rows)
     }
 }
 

@@ -273,11 +273,7 @@ impl PointsIter for Triangle {
         } else {
             i64::from(sorted[0].y)..i64::from(sorted[2].y)
         };
-        Points {
-            triangle: PointsOf::Whole(sorted),
-            rows,
-            span: None,
-        }
+        Points::new(PointsOf::Whole(sorted), rows)
     }
 }
 
@@ -305,9 +301,9 @@ pub struct Points {
 
 impl Points {
     /// The points of `triangle` on `rows`.
-    pub(super) fn of_subpixel(triangle: SubPixelTriangle, rows: core::ops::Range<i64>) -> Self {
+    pub(super) fn new(triangle: PointsOf, rows: core::ops::Range<i64>) -> Self {
         Self {
-            triangle: PointsOf::SubPixel(triangle),
+            triangle,
             rows,
             span: None,
         }
@@ -316,7 +312,7 @@ impl Points {
 
 /// Whose points [`Points`] lists.
 #[derive(Clone, Debug)]
-enum PointsOf {
+pub(super) enum PointsOf {
     /// A [`Triangle`]'s vertices, top to bottom.
     Whole([Point; 3]),
     SubPixel(SubPixelTriangle),

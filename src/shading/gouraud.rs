@@ -9,11 +9,11 @@ use super::{
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
-use crate::unroll::per_channel;
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
     interpolate::{Planes, TrackedPlanes},
+    unroll::per_channel,
 };
 
 /// Fills a triangle with colours interpolated between its vertices.

@@ -3,11 +3,11 @@
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, pixelcolor::PixelColor};
 
 use super::paint::stored;
-use crate::unroll::per_channel;
 use crate::{
     coverage::Span,
     geometry::Shape,
     interpolate::{AreaMemo, Planes},
+    unroll::per_channel,
 };
 
 /// Computes colours pixel by pixel along a span, by additions.

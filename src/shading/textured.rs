@@ -9,7 +9,6 @@ use super::{
     spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
 };
-use crate::unroll::per_channel;
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
@@ -19,6 +18,7 @@ use crate::{
         Axis, Filter, Narrow, Perspective, Scaled, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
         RAW_SHIFT,
     },
+    unroll::per_channel,
 };
 
 /// Fills a triangle with a texture: each pixel takes the texel (or bilinear blend of texels)
