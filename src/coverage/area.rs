@@ -30,7 +30,10 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::Span;
 use crate::geometry::Triangle;
-use crate::setup::{lane::floor_div_rem_i128, Lane};
+use crate::setup::{
+    lane::{floor_div_rem_i128, mul_u32},
+    Lane,
+};
 
 /// Fraction bits of positions.
 const FRAC: u32 = 12;
@@ -85,6 +88,8 @@ trait Coord:
     fn widen(self) -> i64;
     /// The low 32 bits.
     fn low(self) -> i32;
+    /// Whether this is `i64`, whose differences may exceed 32 bits.
+    const WIDE: bool;
 }
 
 macro_rules! coord {
@@ -95,6 +100,7 @@ macro_rules! coord {
             const PIXEL_LESS_ONE: Self = (1 << FRAC) - 1;
             const HALF: Self = 1 << (FRAC - 1);
             const FULL: Self = 1 << (2 * FRAC);
+            const WIDE: bool = <$t>::BITS > 32;
             #[inline(always)]
             fn narrow(value: i64) -> Self {
                 value as $t
@@ -326,7 +332,16 @@ impl<P: Coord> Piece<P> {
             return P::narrow(i64::from(left_of));
         }
         let across = from_left.widen() as u64;
-        let rows = (across.saturating_mul(self.rows_per_column) >> 32) as i64;
+        let rows = if P::WIDE {
+            (across.saturating_mul(self.rows_per_column) >> 32) as i64
+        } else if self.rows_per_column >> 32 > 0 {
+            // More than a column in at a whole row per unit or more: every row.
+            return self.rows;
+        } else {
+            // Under 2^31 units across: the product's upper word, where a 64-bit multiply is a
+            // library call on Cortex-M0.
+            (mul_u32(across as u32, self.rows_per_column as u32) >> 32) as i64
+        };
         P::narrow(rows.min(self.rows.widen()))
     }
 

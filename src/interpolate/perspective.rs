@@ -11,9 +11,9 @@
 use embedded_graphics::primitives::Rectangle;
 use fixed::types::I16F16;
 
-use super::{planes::widening_mul, AreaMemo, TrackedPlanes};
+use super::{AreaMemo, TrackedPlanes};
 use crate::geometry::Shape;
-use crate::setup::lane::{mul_small, shr64};
+use crate::setup::lane::{mul_small, mul_u32, shr64, widening_mul};
 
 /// How many pixels apart perspective-correct interpolation divides: the true texture coordinates
 /// are computed at both ends of each sub-span of a row, and stepped linearly between.
@@ -205,17 +205,6 @@ fn reciprocal_inline(d: u32) -> u32 {
     let error = ((1u64 << 63).wrapping_sub(mul_u32(d, x)) as i64) >> 20;
     let correction = mul_i32_u32(error as i32, x) >> 43;
     (i64::from(x) + correction).clamp(0, i64::from(u32::MAX)) as u32
-}
-
-/// `a * b` in full: one multiply on cores that have it, four 16-bit ones on Cortex-M0 (where
-/// a 64-bit multiply is a call of about forty instructions). The same bits either way.
-#[inline(always)]
-pub(super) fn mul_u32(a: u32, b: u32) -> u64 {
-    if cfg!(target_has_atomic = "32") {
-        u64::from(a) * u64::from(b)
-    } else {
-        widening_mul(a, b)
-    }
 }
 
 /// `a * b` in full, for a signed `a`: one multiply on cores that have it, [`mul_i32_u32_split`]

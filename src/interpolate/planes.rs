@@ -4,8 +4,10 @@ use core::cell::Cell;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-use super::perspective::{mul_u32, reciprocal};
-use crate::setup::lane::{div_rem_u64, floor_div_rem_i128, mul_16_by_32, mul_count, shl64, shr64};
+use super::perspective::reciprocal;
+use crate::setup::lane::{
+    div_rem_u64, floor_div_rem_i128, mul_16_by_32, mul_count, mul_u32, shl64, shr64, widening_mul,
+};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -1068,16 +1070,6 @@ fn fraction_of_split(g: i64, f: i64) -> i64 {
     let (high, low) = ((whole >> 32) as u32, whole as u32);
     let product = (u64::from(high.wrapping_mul(f)) << 32).wrapping_add(widening_mul(low, f));
     product.wrapping_add(u64::from(rest)) as i64
-}
-
-/// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
-/// of about forty instructions on Cortex-M0.
-#[inline(always)]
-pub(super) fn widening_mul(a: u32, b: u32) -> u64 {
-    let (a_high, a_low) = (a >> 16, a & 0xFFFF);
-    let (b_high, b_low) = (b >> 16, b & 0xFFFF);
-    let middle = u64::from(a_high * b_low) + u64::from(a_low * b_high);
-    (u64::from(a_high * b_high) << 32) + (middle << 16) + u64::from(a_low * b_low)
 }
 
 #[cfg(not(target_has_atomic = "32"))]

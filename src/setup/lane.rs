@@ -291,6 +291,27 @@ fn mul_small_split(value: i64, small: u32) -> i64 {
     (u64::from(high.wrapping_mul(small)) << 32).wrapping_add(low) as i64
 }
 
+/// `a * b` in full: one multiply on cores that have it, four 16-bit ones on Cortex-M0 (where
+/// a 64-bit multiply is a call of about forty instructions). The same bits either way.
+#[inline(always)]
+pub(crate) fn mul_u32(a: u32, b: u32) -> u64 {
+    if cfg!(target_has_atomic = "32") {
+        u64::from(a) * u64::from(b)
+    } else {
+        widening_mul(a, b)
+    }
+}
+
+/// `a * b` in full, from four 16 x 16-bit products: inline, where a 64-bit multiply is a call
+/// of about forty instructions on Cortex-M0.
+#[inline(always)]
+pub(crate) fn widening_mul(a: u32, b: u32) -> u64 {
+    let (a_high, a_low) = (a >> 16, a & 0xFFFF);
+    let (b_high, b_low) = (b >> 16, b & 0xFFFF);
+    let middle = u64::from(a_high * b_low) + u64::from(a_low * b_high);
+    (u64::from(a_high * b_high) << 32) + (middle << 16) + u64::from(a_low * b_low)
+}
+
 /// `a * b` in full for `a` below 2^16: two 16-bit multiplies (Cortex-M0 has no wider one).
 /// Tested on every host.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
