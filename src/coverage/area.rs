@@ -191,7 +191,11 @@ impl<P: Coord> Edge<P> {
             let carry = i64::from(2 * rest >= dy);
             ((half, rest), (2 * half + carry, 2 * rest - carry * dy))
         } else {
-            (start_crossing(y - a.y, dx, dy), floor_div(ONE * dx, dy))
+            let (step, step_remainder) = floor_div(ONE * dx, dy);
+            (
+                start_from_step(y - a.y, dx, dy, step, step_remainder),
+                (step, step_remainder),
+            )
         };
         let x = a.x + x;
         let (across, down) = (dx.unsigned_abs() >> FRAC, (dy as u64) >> FRAC);
@@ -275,6 +279,26 @@ fn floor_div(n: i64, d: i64) -> (i64, i64) {
         }
         _ => n.div_rem_floor(d),
     }
+}
+
+/// [`start_crossing`] from the row step `ONE dx = step dy + step_remainder`, without a
+/// second division where every product fits 32 bits (within a row of the vertex, under 128
+/// pixels each way): with `down step = q 2^12 + r`, `down dx = q dy + t` for
+/// `t = (r dy + down step_remainder) / 2^12`, which is exact and in `0..2 dy`.
+#[inline(always)]
+fn start_from_step(down: i64, dx: i64, dy: i64, step: i64, step_remainder: i64) -> (i64, i64) {
+    if (0..ONE).contains(&down) && step.unsigned_abs() < 1 << 19 && dy < 1 << 19 {
+        let moved = down as i32 * step as i32;
+        let (whole, part) = (moved >> FRAC, (moved & (ONE as i32 - 1)) as u32);
+        let (dy, down) = (dy as u32, down as u32);
+        let t = (part * dy + down * step_remainder as u32) >> FRAC;
+        return if t >= dy {
+            (i64::from(whole) + 1, i64::from(t - dy))
+        } else {
+            (i64::from(whole), i64::from(t))
+        };
+    }
+    start_crossing(down, dx, dy)
 }
 
 /// `down * dx / dy` as quotient (rounded down) and remainder, for `down >= 0`, `dy > 0`: in
@@ -898,4 +922,45 @@ fn row_coverage<P: Coord, K: CoverageSink>(
         boundary_columns(bounds, (right_start, right_end), clip, run, sink)?;
     }
     run.flush(sink)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The start from the row step is the start's own division, wherever it applies and at
+    /// the ends of its range.
+    #[test]
+    fn start_from_step_is_the_division() {
+        let check = |down: i64, dx: i64, dy: i64| {
+            let (step, rest) = floor_div(ONE * dx, dy);
+            let want = start_crossing(down, dx, dy);
+            assert_eq!(
+                start_from_step(down, dx, dy, step, rest),
+                want,
+                "{down} {dx} {dy}"
+            );
+            let (q, r) = want;
+            assert_eq!(q * dy + r, down * dx, "{down} {dx} {dy}");
+            assert!((0..dy).contains(&r), "{down} {dx} {dy}");
+        };
+        let mut rng = crate::test_rng::XorShift(0x2545_F491_4F6C_DD1D);
+        for _ in 0..200_000 {
+            let r = rng.next_u64();
+            let down = (r & (ONE as u64 - 1)) as i64;
+            let dx = ((r >> 12) % (1 << 21)) as i64 - (1 << 20);
+            let dy = 1 + ((r >> 40) % (1 << 20)) as i64;
+            check(down, dx, dy);
+            // Steep and shallow edges within a few pixels, as small triangles have.
+            check(down, dx >> 8, (dy >> 8).max(1));
+        }
+        let limit = (1 << 19) - 1;
+        for down in [0, 1, ONE / 2, ONE - 1, ONE] {
+            for dx in [-limit - 1, -limit, -4097, -1, 0, 1, 4095, limit] {
+                for dy in [1, 2, 4095, 4096, limit, limit + 1] {
+                    check(down, dx, dy);
+                }
+            }
+        }
+    }
 }
