@@ -400,10 +400,11 @@ impl<P: Coord> Piece<P> {
         } else {
             self.rows_left_of(leave).low().max(before)
         };
-        // Past the column: the whole width; inside it: the mean depth into it.
+        // Past the column: the whole width; inside it: the mean depth into it (both factors
+        // non-negative: halved by a shift, where `/ 2` rounds a sign it cannot have).
         let depth = (enter - x0).low() + (leave - x0).low();
         P::narrow(i64::from(
-            (rows - inside) * ONE as i32 + (inside - before) * depth / 2,
+            (rows - inside) * ONE as i32 + (((inside - before) * depth) >> 1),
         ))
     }
 }
