@@ -200,14 +200,16 @@ impl<P: Coord> Edge<P> {
         let x = a.x + x;
         let (across, down) = (dx.unsigned_abs() >> FRAC, (dy as u64) >> FRAC);
         let whole_pixels = (dx | dy) & (ONE - 1) == 0;
-        let rows_per_column = if dx == 0 {
+        let magnitude = dx.unsigned_abs();
+        let rows_per_column = if (magnitude.wrapping_sub(1) | dy as u64) < 1 << 16 {
+            // At most 16 pixels across (not vertical) and under 16 down: the ratio in 1/4096
+            // units (whole pixels give the same quotient: scaling both does not change it).
+            ratio_by_digits(dy as u32, magnitude as u32)
+        } else if dx == 0 {
             u64::MAX
         } else if whole_pixels && across < 1 << 16 && down < 1 << 16 {
             // Vertices at pixel centres, under 2^16 pixels apart: the ratio in whole pixels.
             ratio_by_digits(down as u32, across as u32)
-        } else if dx.unsigned_abs() < 1 << 16 && dy < 1 << 16 {
-            // Under 16 pixels each way: the ratio in 1/4096 units.
-            ratio_by_digits(dy as u32, dx.unsigned_abs() as u32)
         } else if (dx | dy).trailing_zeros() >= 4 && dx.unsigned_abs() < 1 << 20 && dy < 1 << 20 {
             // Vertices in 1/256 pixel (16 units), under 256 pixels each way: in 1/256 pixel.
             ratio_by_digits((dy >> 4) as u32, (dx.unsigned_abs() >> 4) as u32)
@@ -259,8 +261,9 @@ impl<P: Coord> Edge<P> {
     }
 }
 
-/// `(rows << 32) / across` for both under 2^16 and `across > 0`, by two 16-bit digits of
-/// 32-bit division: a 64-bit division is a library call on every Cortex-M.
+/// `(rows << 32) / across` for `rows` under 2^16 and `across` in `1..=2^16`, by two 16-bit
+/// digits of 32-bit division (each dividend below 2^32): a 64-bit division is a library call
+/// on every Cortex-M.
 #[inline(always)]
 fn ratio_by_digits(rows: u32, across: u32) -> u64 {
     let high = (rows << 16) / across;
@@ -287,7 +290,8 @@ fn floor_div(n: i64, d: i64) -> (i64, i64) {
 /// `t = (r dy + down step_remainder) / 2^12`, which is exact and in `0..2 dy`.
 #[inline(always)]
 fn start_from_step(down: i64, dx: i64, dy: i64, step: i64, step_remainder: i64) -> (i64, i64) {
-    if (0..ONE).contains(&down) && step.unsigned_abs() < 1 << 19 && dy < 1 << 19 {
+    // One comparison per bound (`dy` is positive, `down` not negative).
+    if (down as u64) < ONE as u64 && (step.unsigned_abs() | dy as u64) < 1 << 19 {
         let moved = down as i32 * step as i32;
         let (whole, part) = (moved >> FRAC, (moved & (ONE as i32 - 1)) as u32);
         let (dy, down) = (dy as u32, down as u32);
@@ -929,10 +933,10 @@ fn row_coverage<P: Coord, K: CoverageSink>(
 mod tests {
     use super::*;
 
-    /// The start from the row step is the start's own division, wherever it applies and at
-    /// the ends of its range.
+    /// An edge's set-up without its general divisions: the start from the row step, and the
+    /// rows-per-column ratio by digits, each against the division, at the ends of their ranges.
     #[test]
-    fn start_from_step_is_the_division() {
+    fn edge_set_up_is_the_division() {
         let check = |down: i64, dx: i64, dy: i64| {
             let (step, rest) = floor_div(ONE * dx, dy);
             let want = start_crossing(down, dx, dy);
@@ -956,6 +960,23 @@ mod tests {
             check(down, dx >> 8, (dy >> 8).max(1));
         }
         let limit = (1 << 19) - 1;
+        // The ratio by digits, up to an `across` of 2^16 itself.
+        for (rows, across) in [
+            (0, 1),
+            (1, 1),
+            (0xFFFF, 1),
+            (0xFFFF, 0x1_0000),
+            (1, 0x1_0000),
+        ] {
+            let want = (u64::from(rows) << 32) / u64::from(across);
+            assert_eq!(ratio_by_digits(rows, across), want, "{rows} {across}");
+        }
+        for _ in 0..100_000 {
+            let r = rng.next_u64();
+            let (rows, across) = ((r & 0xFFFF) as u32, 1 + ((r >> 16) % 0x1_0000) as u32);
+            let want = (u64::from(rows) << 32) / u64::from(across);
+            assert_eq!(ratio_by_digits(rows, across), want, "{rows} {across}");
+        }
         for down in [0, 1, ONE / 2, ONE - 1, ONE] {
             for dx in [-limit - 1, -limit, -4097, -1, 0, 1, 4095, limit] {
                 for dy in [1, 2, 4095, 4096, limit, limit + 1] {
