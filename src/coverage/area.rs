@@ -285,9 +285,10 @@ fn floor_div(n: i64, d: i64) -> (i64, i64) {
 }
 
 /// [`start_crossing`] from the row step `ONE dx = step dy + step_remainder`, without a
-/// second division where every product fits 32 bits (within a row of the vertex, under 128
-/// pixels each way): with `down step = q 2^12 + r`, `down dx = q dy + t` for
-/// `t = (r dy + down step_remainder) / 2^12`, which is exact and in `0..2 dy`.
+/// second division where every product fits 32 bits (within a row of the vertex, for edges
+/// under 128 pixels high moving under 128 pixels a row): with `down step = q 2^12 + r`,
+/// `down dx = q dy + t` for `t = (r dy + down step_remainder) / 2^12`, which is exact and in
+/// `0..2 dy`.
 #[inline(always)]
 fn start_from_step(down: i64, dx: i64, dy: i64, step: i64, step_remainder: i64) -> (i64, i64) {
     // One comparison per bound (`dy` is positive, `down` not negative).
