@@ -837,7 +837,8 @@ fn reciprocal_by_correction(d: u32) -> u64 {
 #[inline(never)]
 fn reciprocal_by_halves(d: u32) -> u64 {
     debug_assert!((1 << 16..1 << 24).contains(&d));
-    // d << shift in [2^31, 2^32), shift in 8..=15: three steps from 8.
+    // d << shift in [2^31, 2^32), shift in 8..=15: three steps from 8 ([`normalise`] takes
+    // five from 0, the first two of which never apply here).
     let (mut normal, mut shift) = (d << 8, 8);
     for step in [4, 2, 1] {
         if normal < 1 << (32 - step) {
