@@ -338,6 +338,36 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// Every vertex's coordinates within a few raw units of the texture's edges (zero, and the
+    /// last coordinate each filter samples inside), or inside: triangles mapped just within
+    /// their texture, whose runs the painter may leave untested, and triangles a unit beyond.
+    #[test]
+    fn coordinates_at_the_texture_edges(seed in any::<u64>()) {
+        let mut rng = Rng(seed);
+        let mut case = random_case::<Rgb565, 3>(seed, small_window(), 10);
+        let bilinear = case.filter == Filter::Bilinear;
+        let mut near_edge = |side: u32| {
+            // Nearest samples floor(u + 1/2): inside below side - 1/2; bilinear reads the
+            // next texel too: inside below side - 1 (1/512 texel of bias).
+            let last = if bilinear { (side as i32 - 1) << 16 } else { ((side as i32) << 16) - (1 << 15) };
+            let offset = rng.range(-3, 3) * [1, 64, 512, 4096][rng.range(0, 3) as usize];
+            let bits = match rng.range(0, 3) {
+                0 => -(1 << 15) + offset,
+                1 => offset,
+                2 => last + offset,
+                _ => rng.range(0, last.max(0)),
+            };
+            I16F16::from_bits(bits)
+        };
+        let (w, h) = case.size;
+        case.uv = [(); 3].map(|()| [near_edge(w), near_edge(h)]);
+        check_case(&case)?;
+    }
+}
+
 /// A constant texture draws exactly its colour, whatever the coordinates, filter and wrap.
 #[test]
 fn constant_texture_is_exact() {
