@@ -59,6 +59,10 @@ pub enum Mode {
     /// Gouraud with ordered dithering (`GouraudStyle::with_dither`). Minus `Gouraud`, what
     /// dithering costs.
     GouraudDither,
+    /// Flat at half opacity over the frame (`Framebuffer::translucent`): every pixel read and
+    /// written, blended where it differs from the pixel before it (a scene of flat
+    /// triangles leaves runs of equal pixels). Minus `Flat`, what a translucent fill costs.
+    TranslucentFlat,
     /// Flat with anti-aliased edges (`BlendTarget::draw_anti_aliased`): edge pixels blended by
     /// their exact coverage. Minus `Flat`, what anti-aliasing costs.
     AntiAliased,
@@ -78,7 +82,7 @@ pub enum Mode {
 
 impl Mode {
     /// Every mode.
-    pub const ALL: [Mode; 17] = [
+    pub const ALL: [Mode; 18] = [
         Mode::Flat,
         Mode::Gouraud,
         Mode::GouraudZ,
@@ -96,6 +100,7 @@ impl Mode {
         Mode::PerspBilinear,
         Mode::BandCache,
         Mode::AntiAliasedSub,
+        Mode::TranslucentFlat,
     ];
 
     /// The name `examples/perf.rs` uses for the mode.
@@ -110,6 +115,7 @@ impl Mode {
             Mode::BandCache => "band-cache",
             Mode::Translucent => "translucent",
             Mode::GouraudDither => "gouraud-dither",
+            Mode::TranslucentFlat => "translucent-flat",
             Mode::AntiAliased => "aa-flat",
             Mode::FlatSub => "flat-sub",
             Mode::GouraudSub => "gouraud-sub",
@@ -177,7 +183,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ`, `Band` and `BandCache` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 68] = [
+pub const EXPECTED: [(Mode, Scene, u32); 72] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -210,6 +216,10 @@ pub const EXPECTED: [(Mode, Scene, u32); 68] = [
     (Mode::Translucent, Scene::Small, 0x03f7e8d6),
     (Mode::Translucent, Scene::Mesh, 0x0498c9cc),
     (Mode::Translucent, Scene::Scene200, 0xd133b3ab),
+    (Mode::TranslucentFlat, Scene::Big, 0x5c7845a1),
+    (Mode::TranslucentFlat, Scene::Small, 0xb557e273),
+    (Mode::TranslucentFlat, Scene::Mesh, 0x8af941fa),
+    (Mode::TranslucentFlat, Scene::Scene200, 0xdcb9d70f),
     (Mode::GouraudDither, Scene::Big, 0x95b2c7e6),
     (Mode::GouraudDither, Scene::Small, 0x11095c64),
     (Mode::GouraudDither, Scene::Mesh, 0x62317d17),
@@ -365,6 +375,9 @@ pub fn draw<const N: usize>(
         Mode::Translucent if const { Mode::Translucent.built() } => {
             draw_translucent(triangles, frame)
         }
+        Mode::TranslucentFlat if const { Mode::TranslucentFlat.built() } => {
+            draw_translucent_flat(triangles, frame)
+        }
         Mode::GouraudDither if const { Mode::GouraudDither.built() } => {
             draw_gouraud(triangles, frame, whole, true)
         }
@@ -457,6 +470,16 @@ fn draw_translucent(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb
         let style = GouraudStyle::new(t.vertex_colors);
         let _ = Triangle::new(a, b, c)
             .into_styled(style)
+            .draw(&mut translucent);
+    }
+}
+
+fn draw_translucent_flat(triangles: &[SceneTriangle], frame: &mut Framebuffer<'_, Rgb565>) {
+    let mut translucent = frame.translucent(128);
+    for t in triangles {
+        let [a, b, c] = t.vertices;
+        let _ = Triangle::new(a, b, c)
+            .into_styled(FlatStyle::new(t.color))
             .draw(&mut translucent);
     }
 }

@@ -323,6 +323,26 @@ where
 
     fn fill_solid(&mut self, area: &Rectangle, color: C) -> Result<(), Self::Error> {
         let opacity = self.opacity;
+        if area.size.height == 1 {
+            // One row inside (a triangle's span): the first pixel blended, then each pixel
+            // that differs from the one before it.
+            let (x, y) = (area.top_left.x, area.top_left.y);
+            if let Some(row) = self.frame.row_mut(y, x, area.size.width) {
+                let Some(first) = row.first().map(|p| p.load()) else {
+                    return Ok(());
+                };
+                let (mut seen, mut result) = (first, S::store(blend(color, first, opacity)));
+                for pixel in row {
+                    let under = pixel.load();
+                    if under != seen {
+                        seen = under;
+                        result = S::store(blend(color, under, opacity));
+                    }
+                    *pixel = result;
+                }
+                return Ok(());
+            }
+        }
         // Pixels often repeat (a background, an earlier fill): blend each new one once.
         let mut last: Option<(C, S)> = None;
         // One colour for every pixel: skipping those outside the image is free.
