@@ -31,7 +31,8 @@ use embedded_graphics::primitives::Rectangle;
 use super::Span;
 use crate::geometry::Triangle;
 use crate::setup::{
-    lane::{floor_div_rem_i128, mul_u32},
+    lane::{floor_div_rem_i128, mul_u32, widening_mul},
+    reciprocal::{normalise, reciprocal},
     Lane,
 };
 
@@ -266,9 +267,49 @@ impl<P: Coord> Edge<P> {
 /// on every Cortex-M.
 #[inline(always)]
 fn ratio_by_digits(rows: u32, across: u32) -> u64 {
+    if cfg!(not(target_has_atomic = "32")) {
+        return ratio_by_inverse(rows, across);
+    }
     let high = (rows << 16) / across;
     let low = (((rows << 16) % across) << 16) / across;
     (u64::from(high) << 16) | u64::from(low)
+}
+
+/// [`ratio_by_digits`] without a division, for Cortex-M0 (where each is a library call of
+/// about 130 instructions): the quotient's three base-2^16 digits, each estimated by a
+/// product with about `2^32 / across` (from [`reciprocal`], within 2^-26 relatively) and
+/// corrected by its remainder, which stays within `i32` (the estimate is a few units off at
+/// most). Exact. Out of line: one copy.
+#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
+#[inline(never)]
+fn ratio_by_inverse(rows: u32, across: u32) -> u64 {
+    if across <= 1 {
+        // 2^32 / 1 does not fit the inverse's 32 bits.
+        return u64::from(rows) << 32;
+    }
+    // `across << shift` in [2^31, 2^32): shift is 15 to 30.
+    let (normal, shift) = normalise(across);
+    // 2^63 / (across 2^shift), shifted down to about 2^32 / across (at most 2^31).
+    let inverse = reciprocal(normal) >> (31 - shift);
+    let mut quotient = 0u64;
+    let mut remainder = 0u32;
+    for digit in [rows, 0, 0] {
+        // remainder < across <= 2^16: the dividend fits 32 bits.
+        let dividend = (remainder << 16) | digit;
+        let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
+        let mut r = dividend.wrapping_sub(q.wrapping_mul(across)) as i32;
+        while r < 0 {
+            q -= 1;
+            r += across as i32;
+        }
+        while r >= across as i32 {
+            q += 1;
+            r -= across as i32;
+        }
+        quotient = (quotient << 16) | u64::from(q);
+        remainder = r as u32;
+    }
+    quotient
 }
 
 /// `n / d` rounded down, and the remainder (`0..d`), for `d > 0`: one division, in 32 bits
@@ -971,12 +1012,21 @@ mod tests {
         ] {
             let want = (u64::from(rows) << 32) / u64::from(across);
             assert_eq!(ratio_by_digits(rows, across), want, "{rows} {across}");
+            assert_eq!(ratio_by_inverse(rows, across), want, "{rows} {across}");
+        }
+        // Every width, with the largest dividends and one just under it.
+        for across in 1..=0x1_0000u32 {
+            for rows in [0xFFFF, across - 1, across.min(0xFFFF)] {
+                let want = (u64::from(rows) << 32) / u64::from(across);
+                assert_eq!(ratio_by_inverse(rows, across), want, "{rows} {across}");
+            }
         }
         for _ in 0..100_000 {
             let r = rng.next_u64();
             let (rows, across) = ((r & 0xFFFF) as u32, 1 + ((r >> 16) % 0x1_0000) as u32);
             let want = (u64::from(rows) << 32) / u64::from(across);
             assert_eq!(ratio_by_digits(rows, across), want, "{rows} {across}");
+            assert_eq!(ratio_by_inverse(rows, across), want, "{rows} {across}");
         }
         for down in [0, 1, ONE / 2, ONE - 1, ONE] {
             for dx in [-limit - 1, -limit, -4097, -1, 0, 1, 4095, limit] {

@@ -4,10 +4,10 @@ use core::cell::Cell;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-use super::perspective::reciprocal;
 use crate::setup::lane::{
     div_rem_u64, floor_div_rem_i128, mul_16_by_32, mul_count, mul_u32, shl64, shr64, widening_mul,
 };
+use crate::setup::reciprocal::{normalise, reciprocal};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -879,24 +879,6 @@ fn reciprocal_by_halves(d: u32) -> u64 {
 fn mul_low(q: u64, d: u32) -> u64 {
     let (high, low) = ((q >> 32) as u32, q as u32);
     mul_u32(low, d).wrapping_add(u64::from(high.wrapping_mul(d)) << 32)
-}
-
-/// `d << shift` in `[2^31, 2^32)` and `shift`, for `d > 0`: counting leading zeros is an
-/// instruction from Cortex-M3 up and a library call on Cortex-M0, where five steps do.
-#[inline(always)]
-fn normalise(d: u32) -> (u32, u32) {
-    if cfg!(target_has_atomic = "32") {
-        let shift = d.leading_zeros();
-        return (d << shift, shift);
-    }
-    let (mut normal, mut shift) = (d, 0);
-    for step in [16, 8, 4, 2, 1] {
-        if normal < 1 << (32 - step) {
-            normal <<= step;
-            shift += step;
-        }
-    }
-    (normal, shift)
 }
 
 /// `floor(2^62 / d)` for `0 < d < 2^(32 - DIGIT)`, by long division of 2^62 = 2^30 * 2^32:

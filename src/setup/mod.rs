@@ -4,6 +4,7 @@
 //! Everything later (edge stepping, interpolation, shading) starts from a [`Prepared`] triangle.
 
 pub(crate) mod lane;
+pub(crate) mod reciprocal;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
