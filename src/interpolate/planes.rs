@@ -249,7 +249,8 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         let origin = Point::new((first.0 >> 8) as i32, (first.1 >> 8) as i32);
         let (fx, fy) = (first.0 & 255, first.1 & 255);
         let mut base = values[0].map(|a0| (a0 + bias) << (SETUP - STEP_BITS));
-        let (mut dx, mut dy) = ([0; N], [0; N]);
+        // Ones rather than zeros, as in `new_small`: no `memclr` calls at `opt-level = "s"`.
+        let (mut dx, mut dy) = ([1; N], [1; N]);
         let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
@@ -344,7 +345,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         // Local arrays, then one struct: filling a zeroed struct field by field left the
         // zeroing (a library call) in place. The values at the vertex by `map`, after the loop:
         // a third array zeroed and filled in it cost Cortex-M0 40 instructions per Gouraud set-up.
-        let (mut dx, mut dy) = ([0; N], [0; N]);
+        // Filled with ones, not zeros: every element is overwritten below, and at `opt-level =
+        // "s"` (where the loop stays a loop) a zeroed array is a `memclr` call of about 90
+        // instructions each, a filled one a few stores.
+        let (mut dx, mut dy) = ([1; N], [1; N]);
         let e = [ex1, ey1, ex2, ey2].map(|d| d as i32);
         for k in 0..N {
             let (a0, a1, a2) = (values[0][k], values[1][k], values[2][k]);
