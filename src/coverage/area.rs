@@ -31,8 +31,8 @@ use embedded_graphics::primitives::Rectangle;
 use super::Span;
 use crate::geometry::Triangle;
 use crate::setup::{
-    lane::{floor_div_rem_i128, mul_u32, widening_mul},
-    reciprocal::{normalise, reciprocal},
+    lane::{floor_div_rem_i128, mul_u32},
+    reciprocal::divide_by_inverse,
     Lane,
 };
 
@@ -276,40 +276,15 @@ fn ratio_by_digits(rows: u32, across: u32) -> u64 {
 }
 
 /// [`ratio_by_digits`] without a division, for Cortex-M0 (where each is a library call of
-/// about 130 instructions): the quotient's three base-2^16 digits, each estimated by a
-/// product with about `2^32 / across` (from [`reciprocal`], within 2^-26 relatively) and
-/// corrected by its remainder, which stays within `i32` (the estimate is a few units off at
-/// most). Exact. Out of line: one copy.
+/// about 130 instructions): `rows 2^32` is the base-2^16 digits `rows, 0, 0`, divided by
+/// [`divide_by_inverse`]. Exact. Out of line: one copy.
 #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(never)]
 fn ratio_by_inverse(rows: u32, across: u32) -> u64 {
     if across <= 1 {
-        // 2^32 / 1 does not fit the inverse's 32 bits.
         return u64::from(rows) << 32;
     }
-    // `across << shift` in [2^31, 2^32): shift is 15 to 30.
-    let (normal, shift) = normalise(across);
-    // 2^63 / (across 2^shift), shifted down to about 2^32 / across (at most 2^31).
-    let inverse = reciprocal(normal) >> (31 - shift);
-    let mut quotient = 0u64;
-    let mut remainder = 0u32;
-    for digit in [rows, 0, 0] {
-        // remainder < across <= 2^16: the dividend fits 32 bits.
-        let dividend = (remainder << 16) | digit;
-        let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
-        let mut r = dividend.wrapping_sub(q.wrapping_mul(across)) as i32;
-        while r < 0 {
-            q -= 1;
-            r += across as i32;
-        }
-        while r >= across as i32 {
-            q += 1;
-            r -= across as i32;
-        }
-        quotient = (quotient << 16) | u64::from(q);
-        remainder = r as u32;
-    }
-    quotient
+    divide_by_inverse([rows, 0, 0], across)
 }
 
 /// `n / d` rounded down, and the remainder (`0..d`), for `d > 0`: one division, in 32 bits

@@ -14,8 +14,8 @@ use fixed::types::I16F16;
 use super::{AreaMemo, TrackedPlanes};
 use crate::geometry::Shape;
 use crate::setup::{
-    lane::{mul_small, mul_u32, shr64},
-    reciprocal::{mul_i32_u32, reciprocal, reciprocal_inline},
+    lane::{mul_i32_u32, mul_small, mul_u32, shr64},
+    reciprocal::{reciprocal, reciprocal_inline},
 };
 
 /// How many pixels apart perspective-correct interpolation divides: the true texture coordinates

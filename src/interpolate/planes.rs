@@ -7,7 +7,7 @@ use embedded_graphics::{geometry::Point, primitives::Rectangle};
 use crate::setup::lane::{
     div_rem_u64, floor_div_rem_i128, mul_16_by_32, mul_count, mul_u32, shl64, shr64, widening_mul,
 };
-use crate::setup::reciprocal::{normalise, reciprocal};
+use crate::setup::reciprocal::{divide_by_inverse, normalise, reciprocal};
 
 /// Values step along spans with 16 fraction bits (in [`Planes::step`]).
 const STEP_BITS: u32 = 16;
@@ -780,30 +780,8 @@ const TINY_RECIPROCALS: [u64; 128] = {
 /// `d`. Exact: the corrections leave each digit's remainder in `0..d`.
 #[inline(always)]
 fn reciprocal_by_inverse(d: u32) -> u64 {
-    let (normal, shift) = normalise(d);
-    // 2^63 / (d * 2^shift) down to about 2^32 / d.
-    let inverse = reciprocal(normal) >> (31 - shift);
-    let mut quotient = 0u64;
-    let mut remainder = 0u32;
     // 2^62 is the digits 0x4000, 0, 0, 0.
-    for digit in [0x4000, 0, 0, 0] {
-        // remainder < d < 2^16: the dividend fits 32 bits and its digit 16.
-        let dividend = (remainder << 16) | digit;
-        let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
-        // q is at most a few above the digit, and q * d below 2^32 (the unit test tries
-        // every d, which fixes every dividend).
-        while q * d > dividend {
-            q -= 1;
-        }
-        let mut r = dividend - q * d;
-        while r >= d {
-            q += 1;
-            r -= d;
-        }
-        quotient = (quotient << 16) | u64::from(q);
-        remainder = r;
-    }
-    quotient
+    divide_by_inverse([0x4000, 0, 0, 0], d)
 }
 
 /// `floor(2^62 / d)` for `2^16 <= d < 2^31` without a division: `2^63 / (d 2^shift)` from

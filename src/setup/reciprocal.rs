@@ -4,7 +4,7 @@
 //! correction divides by `1 / w` with them at every sub-span's end, plane set-up by small
 //! areas and anti-aliasing by an edge's width.
 
-use super::lane::{mul_u32, widening_mul};
+use super::lane::{mul_i32_u32, mul_u32, widening_mul};
 
 /// `d << shift` in `[2^31, 2^32)` and `shift`, for `d > 0`: counting leading zeros is an
 /// instruction from Cortex-M3 up and a library call on Cortex-M0, where five steps do.
@@ -70,25 +70,38 @@ pub(crate) fn reciprocal_inline(d: u32) -> u32 {
     (i64::from(x) + correction).clamp(0, i64::from(u32::MAX)) as u32
 }
 
-/// `a * b` in full, for a signed `a`: one multiply on cores that have it, [`mul_i32_u32_split`]
-/// on Cortex-M0.
+/// `digits / d`, for the base-2^16 `digits` of a dividend (most significant first, each below
+/// 2^16) and `d` in `2..=2^16`, without a division: long division, each quotient digit estimated by a product with about
+/// `2^32 / d` (from [`reciprocal`], within 2^-26 relatively) and corrected by comparing with
+/// `d`. Exact: the corrections leave each digit's remainder in `0..d`. The plane set-up's
+/// small areas (`2^62 / d`) and anti-aliasing's edge ratios (`rows 2^32 / d`) divide so on
+/// Cortex-M0, where a 32-bit division is a library call of about 130 instructions.
 #[inline(always)]
-pub(crate) fn mul_i32_u32(a: i32, b: u32) -> i64 {
-    if cfg!(target_has_atomic = "32") {
-        i64::from(a) * i64::from(b)
-    } else {
-        mul_i32_u32_split(a, b)
+pub(crate) fn divide_by_inverse<const K: usize>(digits: [u32; K], d: u32) -> u64 {
+    let (normal, shift) = normalise(d);
+    // 2^63 / (d * 2^shift) down to about 2^32 / d.
+    let inverse = reciprocal(normal) >> (31 - shift);
+    let mut quotient = 0u64;
+    let mut remainder = 0u32;
+    for digit in digits {
+        // remainder < d <= 2^16: the dividend fits 32 bits and its digit 16.
+        let dividend = (remainder << 16) | digit;
+        let mut q = (widening_mul(dividend, inverse) >> 32) as u32;
+        // q is a few units off the digit at most, so its remainder, taken wrapping, is
+        // within `i32` (the callers' unit tests try every d, with the largest dividends).
+        let mut r = dividend.wrapping_sub(q.wrapping_mul(d)) as i32;
+        while r < 0 {
+            q -= 1;
+            r += d as i32;
+        }
+        while r >= d as i32 {
+            q += 1;
+            r -= d as i32;
+        }
+        quotient = (quotient << 16) | u64::from(q);
+        remainder = r as u32;
     }
-}
-
-/// [`mul_i32_u32`] in four 16-bit multiplies: `a`'s bits read unsigned are `a + 2^32` when
-/// `a` is negative, so the unsigned product is `b * 2^32` too large then (one subtraction,
-/// where taking the magnitude and negating the product measured more). Tested on every host.
-#[inline(always)]
-fn mul_i32_u32_split(a: i32, b: u32) -> i64 {
-    let product = widening_mul(a as u32, b);
-    let excess = if a < 0 { u64::from(b) << 32 } else { 0 };
-    product.wrapping_sub(excess) as i64
+    quotient
 }
 
 #[cfg(test)]
@@ -119,39 +132,5 @@ mod tests {
             }
         }
         check(u32::MAX);
-    }
-
-    #[test]
-    fn the_split_signed_product_is_the_product() {
-        let mut rng = crate::test_rng::XorShift(0x5851_F42D_4C95_7F2D);
-        let edges = [
-            0,
-            1,
-            -1,
-            i32::MAX,
-            i32::MIN,
-            1 << 16,
-            -(1 << 16),
-            0x7FFF,
-            -0x8000,
-        ];
-        let bs = [0, 1, u32::MAX, 1 << 31, 0xFFFF, 0x1_0000, 12_345_678];
-        for &a in &edges {
-            for &b in &bs {
-                assert_eq!(
-                    mul_i32_u32_split(a, b),
-                    i64::from(a) * i64::from(b),
-                    "{a} {b}"
-                );
-            }
-        }
-        for _ in 0..100_000 {
-            let (a, b) = (rng.next_u64() as i32, rng.next_u64() as u32);
-            assert_eq!(
-                mul_i32_u32_split(a, b),
-                i64::from(a) * i64::from(b),
-                "{a} {b}"
-            );
-        }
     }
 }
