@@ -299,18 +299,21 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     }
 
     #[inline(always)]
-    fn planes_with<const N: usize, const SETUP: u32>(
+    fn planes_with<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
         reference: Point,
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
-        self.through_slot(|| self.shape.planes_with(values, bias, reference, memo))
+        self.through_slot(|| {
+            self.shape
+                .planes_with::<N, SETUP, WHOLE_BITS>(values, bias, reference, memo)
+        })
     }
 
     #[inline(always)]
-    fn planes_adjusted<const N: usize, const SETUP: u32>(
+    fn planes_adjusted<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -320,7 +323,7 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
     ) -> Option<Planes<N, SETUP>> {
         self.through_slot(|| {
             self.shape
-                .planes_adjusted(values, bias, reference, memo, adjust)
+                .planes_adjusted::<N, SETUP, WHOLE_BITS>(values, bias, reference, memo, adjust)
         })
     }
 

@@ -50,7 +50,7 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
         let values = || self.depths.map(|d| [i64::from(d) << 16]);
         let Some(depth) =
             self.triangle
-                .planes_with(values, 1 << 15, self.setup.top_left, self.memo)
+                .planes_with::<1, 32, 0>(values, 1 << 15, self.setup.top_left, self.memo)
         else {
             return Ok(());
         };

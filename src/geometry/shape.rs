@@ -79,10 +79,11 @@ pub trait Shape: sealed::Sealed {
 
     /// [`Shape::planes`] of the values `values` gives, computed only where the planes
     /// are made (band rendering may have them already; the rare exact set-up takes them
-    /// through memory, where the common one need not).
+    /// through memory, where the common one need not). Every value is whole and below
+    /// `2^WHOLE_BITS` in magnitude (0 when nothing is known; colour channels: `CHANNEL_BITS`).
     #[doc(hidden)]
     #[inline(always)]
-    fn planes_with<const N: usize, const SETUP: u32>(
+    fn planes_with<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -96,7 +97,7 @@ pub trait Shape: sealed::Sealed {
     /// which band rendering keeps between bands in their stead.
     #[doc(hidden)]
     #[inline(always)]
-    fn planes_adjusted<const N: usize, const SETUP: u32>(
+    fn planes_adjusted<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -104,7 +105,7 @@ pub trait Shape: sealed::Sealed {
         memo: Option<&AreaMemo>,
         adjust: impl FnOnce(&mut Planes<N, SETUP>),
     ) -> Option<Planes<N, SETUP>> {
-        let mut planes = self.planes_with(values, bias, reference, memo)?;
+        let mut planes = self.planes_with::<N, SETUP, WHOLE_BITS>(values, bias, reference, memo)?;
         adjust(&mut planes);
         Some(planes)
     }
@@ -165,7 +166,7 @@ impl Shape for Triangle {
     }
 
     #[inline(always)]
-    fn planes_with<const N: usize, const SETUP: u32>(
+    fn planes_with<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -179,7 +180,7 @@ impl Shape for Triangle {
         if cfg!(target_has_atomic = "32") {
             Planes::new_with(self.vertices, values, bias, reference, memo)
         } else {
-            self.planes(values(), bias, reference, memo)
+            Planes::new_whole::<WHOLE_BITS>(self.vertices, values(), bias, reference, memo)
         }
     }
 
@@ -263,7 +264,7 @@ impl Shape for SubPixelTriangle {
     }
 
     #[inline(always)]
-    fn planes_with<const N: usize, const SETUP: u32>(
+    fn planes_with<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(
         &self,
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -271,11 +272,13 @@ impl Shape for SubPixelTriangle {
         memo: Option<&AreaMemo>,
     ) -> Option<Planes<N, SETUP>> {
         // As the whole-pixel triangle's.
-        if !cfg!(target_has_atomic = "32") {
-            return self.planes(values(), bias, reference, memo);
-        }
         if let Some(whole) = self.whole() {
-            return whole.planes_with(values, bias, reference, memo);
+            return whole.planes_with::<N, SETUP, WHOLE_BITS>(values, bias, reference, memo);
+        }
+        if !cfg!(target_has_atomic = "32") {
+            let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
+            let values = values();
+            return Planes::new_subpixel_whole::<WHOLE_BITS>(raw, values, bias, reference, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
         Planes::new_subpixel_with(raw, values, bias, reference, memo)

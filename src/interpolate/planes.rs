@@ -108,8 +108,21 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         reference: Point,
         memo: Option<&AreaMemo>,
     ) -> Option<Self> {
+        Self::new_whole::<0>(vertices, values, bias, reference, memo)
+    }
+
+    /// [`Planes::new`] of values known to be whole and below `2^WHOLE_BITS` in magnitude
+    /// (0 when nothing is known: see [`CHANNEL_BITS`]).
+    #[inline(always)]
+    pub(crate) fn new_whole<const WHOLE_BITS: u32>(
+        vertices: [Point; 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+        memo: Option<&AreaMemo>,
+    ) -> Option<Self> {
         match edges_within(vertices.map(wide), SMALL_BITS) {
-            Some(e) => Self::new_small(vertices[0], values, bias, e, memo),
+            Some(e) => Self::new_small::<WHOLE_BITS>(vertices[0], values, bias, e, memo),
             None => Self::new_exact(vertices, values, bias, reference),
         }
     }
@@ -127,7 +140,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         memo: Option<&AreaMemo>,
     ) -> Option<Self> {
         match edges_within(vertices.map(wide), SMALL_BITS) {
-            Some(e) => Self::new_small(vertices[0], values(), bias, e, memo),
+            Some(e) => Self::new_small::<0>(vertices[0], values(), bias, e, memo),
             None => Self::new_exact(vertices, values(), bias, reference),
         }
     }
@@ -158,7 +171,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             }
         };
         match edges_within(vertices.map(wide), SMALL_BITS) {
-            Some(e) => Self::new_small(vertices[0], values, bias, e, memo),
+            Some(e) => Self::new_small::<0>(vertices[0], values, bias, e, memo),
             None => Self::new_exact(vertices, values, bias, window.top_left),
         }
     }
@@ -174,9 +187,22 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         reference: Point,
         memo: Option<&AreaMemo>,
     ) -> Option<Self> {
+        Self::new_subpixel_whole::<0>(vertices, values, bias, reference, memo)
+    }
+
+    /// [`Planes::new_subpixel`] of values known to be whole and below `2^WHOLE_BITS` in
+    /// magnitude, as [`Planes::new_whole`].
+    #[inline(always)]
+    pub(crate) fn new_subpixel_whole<const WHOLE_BITS: u32>(
+        vertices: [(i32, i32); 3],
+        values: [[i64; N]; 3],
+        bias: i64,
+        reference: Point,
+        memo: Option<&AreaMemo>,
+    ) -> Option<Self> {
         let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         match edges_within(wide, SMALL_BITS) {
-            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e, memo),
+            Some(e) => Self::new_small_subpixel::<WHOLE_BITS>(wide[0], values, bias, e, memo),
             None => Self::new_large_subpixel(vertices, values, bias, reference),
         }
     }
@@ -193,7 +219,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     ) -> Option<Self> {
         let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         match edges_within(wide, SMALL_BITS) {
-            Some(e) => Self::new_small_subpixel(wide[0], values(), bias, e, memo),
+            Some(e) => Self::new_small_subpixel::<0>(wide[0], values(), bias, e, memo),
             None => Self::new_large_subpixel(vertices, values(), bias, reference),
         }
     }
@@ -219,7 +245,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         };
         let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         match edges_within(wide, SMALL_BITS) {
-            Some(e) => Self::new_small_subpixel(wide[0], values, bias, e, memo),
+            Some(e) => Self::new_small_subpixel::<0>(wide[0], values, bias, e, memo),
             None => Self::new_large_subpixel(vertices, values, bias, window.top_left),
         }
     }
@@ -230,7 +256,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     /// core: out of line on Cortex-M0 (as `new_small` is) it measured 1 KB less flash in the
     /// every-mode firmware but 3% more instructions per small sub-pixel triangle.
     #[inline(always)]
-    fn new_small_subpixel(
+    fn new_small_subpixel<const WHOLE_BITS: u32>(
         first: (i64, i64),
         values: [[i64; N]; 3],
         bias: i64,
@@ -258,7 +284,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             // As in `new_small` (written out in both: one helper for the two measured 1.8% more
             // instructions per small Gouraud triangle on Cortex-M0).
             let whole = if cfg!(not(target_has_atomic = "32")) {
-                whole_numerators(da1, da2, e)
+                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
             } else {
                 None
             };
@@ -320,9 +346,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     /// for 11 KB. Values that are not whole take [`fractional_gradients`], a call on
     /// Cortex-M0 shared by every number of planes (firmware 0.9 to 2.2 KB smaller,
     /// Gouraud 1% faster per small triangle, texture mapping 0.5% and perspective 2% slower).
+    /// Values known to be whole (`WHOLE_BITS`, see [`whole_numerators_of`]) never take it: on
+    /// Cortex-M0 colour set-ups have a copy of their own, which links none of it.
     #[cfg_attr(not(target_has_atomic = "32"), inline(never))]
     #[cfg_attr(target_has_atomic = "32", inline(always))]
-    fn new_small(
+    fn new_small<const WHOLE_BITS: u32>(
         origin: Point,
         values: [[i64; N]; 3],
         bias: i64,
@@ -355,10 +383,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             let (da1, da2) = (a1 - a0, a2 - a0);
             // Whole values (colours, depths) take 64-bit arithmetic (see `scale_whole`) on
             // cores without a 64-bit multiply. Elsewhere, where this setup is inline in every
-            // style and target, the second path measured 5 to 6% fewer instructions per small
-            // Gouraud triangle on Cortex-M4F for 5.3 KB more in the every-mode firmware.
+            // style and target, every value takes the second path: on Cortex-M4F the first
+            // beside it measured -5 to -6% per small Gouraud triangle for 5.3 KB more in the
+            // every-mode firmware, and alone +9%. Both give the same gradients, bit for bit.
             let whole = if cfg!(not(target_has_atomic = "32")) {
-                whole_numerators(da1, da2, e)
+                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
             } else {
                 None
             };
@@ -511,6 +540,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         Self::to_step_units(&self.at_exact(x, y))
     }
 }
+
+/// What set-ups of colour channels (`u8`, as raw 16.16) know of their values: whole, and
+/// below 2^8. A set-up's `WHOLE_BITS` (0 when nothing is known, as for texture coordinates
+/// and shader attributes) lets it take the whole-valued gradients only (see [`whole_numerators_of`]).
+pub(crate) const CHANNEL_BITS: u32 = 8;
 
 /// Deltas below which a triangle takes the small set-up (vertices under 2^15 units apart).
 const SMALL_BITS: u32 = 15;
@@ -982,6 +1016,28 @@ fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
     }
     let [ex1, ey1, ex2, ey2] = e;
     let (l1, l2) = (da1 as i32 >> 16, da2 as i32 >> 16);
+    Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
+}
+
+/// [`whole_numerators`] for values known to be whole and below `2^WHOLE_BITS` in magnitude
+/// (0: nothing known): for `WHOLE_BITS` from 1 to 15, every product is below 2^30 and the
+/// numerators are taken without testing, always `Some`. The set-ups' fallback for other
+/// values, [`fractional_gradients`], is then never called, so colours link none of it (1.7 KB
+/// of a Gouraud firmware on Cortex-M0), and the test is saved (3% of a small Gouraud triangle
+/// there).
+#[inline(always)]
+fn whole_numerators_of<const WHOLE_BITS: u32>(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
+    if WHOLE_BITS == 0 || WHOLE_BITS > 15 {
+        return whole_numerators(da1, da2, e);
+    }
+    debug_assert!(
+        whole_numerators(da1, da2, e).is_some()
+            && da1.unsigned_abs() < 1 << (16 + WHOLE_BITS)
+            && da2.unsigned_abs() < 1 << (16 + WHOLE_BITS),
+        "{da1} {da2}"
+    );
+    let [ex1, ey1, ex2, ey2] = e;
+    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
     Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
 }
 
@@ -2045,6 +2101,31 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn known_whole_numerators_are_the_tested_ones() {
+        // Every pair of colour-channel deltas (as raw 16.16) along edges at the ends of the
+        // small set-up's range: the untested numerators are the tested ones.
+        let sides = [0i32, 1, -1, 7, -300, (1 << 15) - 1, -(1 << 15) + 1];
+        for e in [
+            [sides[5], sides[6], sides[3], sides[4]],
+            [sides[1], sides[0], sides[2], sides[5]],
+            [sides[6], sides[6], sides[5], sides[5]],
+            [sides[5], sides[5], sides[6], sides[6]],
+        ] {
+            for l1 in -255i64..=255 {
+                for l2 in [-255i64, -128, -1, 0, 1, 77, 255] {
+                    let (da1, da2) = (l1 << 16, l2 << 16);
+                    let want = whole_numerators(da1, da2, e);
+                    assert!(want.is_some());
+                    assert_eq!(whole_numerators_of::<CHANNEL_BITS>(da1, da2, e), want);
+                    assert_eq!(whole_numerators_of::<0>(da1, da2, e), want);
+                }
+            }
+        }
+        // Nothing known: values that are not whole are not taken.
+        assert_eq!(whole_numerators_of::<0>(1, 0, [1, 0, 0, 1]), None);
     }
 
     #[test]

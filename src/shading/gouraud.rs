@@ -12,7 +12,7 @@ use super::{
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{Planes, TrackedPlanes},
+    interpolate::{Planes, TrackedPlanes, CHANNEL_BITS},
     unroll::per_channel,
 };
 
@@ -199,7 +199,8 @@ where
         // Only anti-aliasing paints pixels outside the triangle: only it carries the range.
         Some(if V::EDGE_PIXELS {
             // Anti-aliased edge pixels keep planes of their own beside the painter's.
-            let planes = triangle.planes_with(values, bias, window.top_left, memo)?;
+            let planes =
+                triangle.planes_with::<N, 32, CHANNEL_BITS>(values, bias, window.top_left, memo)?;
             let mut stepped = planes;
             let packed = to_lanes(&mut stepped);
             visitor.visit(EdgeClamped {
@@ -212,10 +213,15 @@ where
             // planes they come from. The lanes keep the planes' origin, which decides: again
             // only for a set-up a band renderer kept (one made here is decided as it is made).
             let mut decided = None;
-            let planes =
-                triangle.planes_adjusted(values, bias, window.top_left, memo, |planes| {
+            let planes = triangle.planes_adjusted::<N, 32, CHANNEL_BITS>(
+                values,
+                bias,
+                window.top_left,
+                memo,
+                |planes| {
                     decided = Some(to_lanes(planes));
-                })?;
+                },
+            )?;
             let packed = decided
                 .unwrap_or_else(|| PackedShader::<C, N>::packs(&planes, window, self.dither));
             visitor.visit(painter(planes, packed))
