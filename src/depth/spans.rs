@@ -7,7 +7,7 @@ use super::{DepthBuffer, DepthTest};
 use crate::{
     coverage::{FillRule, Span, SpanSink},
     geometry::Shape,
-    interpolate::{AreaMemo, TrackedPlanes},
+    interpolate::{AreaMemo, TrackedPlanes, DEPTH_BITS},
     shading::paint::{PaintVisitor, Painter},
 };
 
@@ -48,10 +48,12 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
         // are): from a corner of the window instead, a band that does not hold the vertex
         // would set the plane up in 128-bit arithmetic.
         let values = || self.depths.map(|d| [i64::from(d) << 16]);
-        let Some(depth) =
-            self.triangle
-                .planes_with::<1, 32, 0>(values, 1 << 15, self.setup.top_left, self.memo)
-        else {
+        let Some(depth) = self.triangle.planes_with::<1, 32, DEPTH_BITS>(
+            values,
+            1 << 15,
+            self.setup.top_left,
+            self.memo,
+        ) else {
             return Ok(());
         };
         let (flip, slack) = self.test.comparison();

@@ -288,7 +288,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else {
                 None
             };
-            if let Some([wx, wy]) = whole {
+            if let Some(gradients) =
+                depth_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
+            {
+                [dx[k], dy[k]] = gradients;
+            } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
             } else {
@@ -391,7 +395,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else {
                 None
             };
-            if let Some([wx, wy]) = whole {
+            if let Some(gradients) =
+                depth_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
+            {
+                [dx[k], dy[k]] = gradients;
+            } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
             } else {
@@ -545,6 +553,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 /// below 2^8. A set-up's `WHOLE_BITS` (0 when nothing is known, as for texture coordinates
 /// and shader attributes) lets it take the whole-valued gradients only (see [`whole_numerators_of`]).
 pub(crate) const CHANNEL_BITS: u32 = 8;
+
+/// What depth set-ups (`u16`, as raw 16.16) know of their values: whole, and below 2^16 (see
+/// [`depth_gradients`]).
+pub(crate) const DEPTH_BITS: u32 = 16;
 
 /// Deltas below which a triangle takes the small set-up (vertices under 2^15 units apart).
 const SMALL_BITS: u32 = 15;
@@ -1028,6 +1040,7 @@ fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
 #[inline(always)]
 fn whole_numerators_of<const WHOLE_BITS: u32>(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
     if WHOLE_BITS == 0 || WHOLE_BITS > 15 {
+        // Depths take `depth_gradients` first.
         return whole_numerators(da1, da2, e);
     }
     debug_assert!(
@@ -1041,8 +1054,57 @@ fn whole_numerators_of<const WHOLE_BITS: u32>(da1: i64, da2: i64, e: [i32; 4]) -
     Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
 }
 
+/// The gradients `[dx, dy]` of a small triangle's depth plane (values whole and below
+/// `2^DEPTH_BITS`), on cores without a 64-bit multiply: `None` elsewhere, and for other
+/// values. Each numerator product is below 2^31 in magnitude (deltas below 2^16, edges below
+/// 2^15), their differences below 2^32 ([`scale_whole_wide`]): depths take no test and, as
+/// colours, link no [`fractional_gradients`] (which took depths more than 32,767 apart).
+#[inline(always)]
+fn depth_gradients<const WHOLE_BITS: u32>(
+    da1: i64,
+    da2: i64,
+    e: [i32; 4],
+    reciprocal: u64,
+    negative: bool,
+    shift: u32,
+) -> Option<[i64; 2]> {
+    if cfg!(target_has_atomic = "32") || WHOLE_BITS != DEPTH_BITS {
+        return None;
+    }
+    Some(wide_whole_gradients(
+        da1, da2, e, reciprocal, negative, shift,
+    ))
+}
+
+/// [`depth_gradients`] on any core.
+#[inline(always)]
+fn wide_whole_gradients(
+    da1: i64,
+    da2: i64,
+    e: [i32; 4],
+    reciprocal: u64,
+    negative: bool,
+    shift: u32,
+) -> [i64; 2] {
+    debug_assert!(
+        da1.trailing_zeros() >= 16
+            && da2.trailing_zeros() >= 16
+            && da1.unsigned_abs() < 1 << (16 + DEPTH_BITS)
+            && da2.unsigned_abs() < 1 << (16 + DEPTH_BITS),
+        "{da1} {da2}"
+    );
+    let [ex1, ey1, ex2, ey2] = e;
+    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
+    let cross = |a: i32, b: i32, c: i32, d: i32| i64::from(a * b) - i64::from(c * d);
+    [
+        scale_whole_wide(cross(l1, ey2, l2, ey1), reciprocal, negative, shift),
+        scale_whole_wide(cross(l2, ex1, l1, ex2), reciprocal, negative, shift),
+    ]
+}
+
 /// [`scale_split`] of the numerator `whole * 2^16`, bit for bit, in 64-bit arithmetic, for
-/// shifts of 17 to 48 (every setup precision, whole-pixel and sub-pixel): the magnitude times
+/// shifts of 17 to 48 (every setup precision, whole-pixel and sub-pixel) and reciprocals up
+/// to 2^62 (a doubled area of 1; `reciprocal_2_62`'s largest): the magnitude times
 /// the reciprocal is `A * 2^32 + B` from 32 x 32 -> 64-bit products, and with `s = shift - 16`
 /// (1 to 32) `floor((A * 2^32 + B + c) / 2^s)` is `A * 2^(32 - s) + floor((B + c) / 2^s)`,
 /// of which only the low 64 bits matter. Rounding half up of a negative product `-P` is
@@ -1050,12 +1112,33 @@ fn whole_numerators_of<const WHOLE_BITS: u32>(da1: i64, da2: i64, e: [i32; 4]) -
 /// replaces cost about 100 instructions per gradient.
 #[inline(always)]
 fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    scale_magnitude(whole.unsigned_abs(), whole < 0, reciprocal, negative, shift)
+}
+
+/// [`scale_whole`] of a numerator below 2^32 in magnitude (a depth plane's, see
+/// [`depth_gradients`]), bit for bit [`scale_split`]'s.
+#[inline(always)]
+fn scale_whole_wide(whole: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    debug_assert!(whole.unsigned_abs() < 1 << 32);
+    let magnitude = whole.unsigned_abs() as u32;
+    scale_magnitude(magnitude, whole < 0, reciprocal, negative, shift)
+}
+
+/// [`scale_whole`] of the numerator of `magnitude`, negative when `below_zero`.
+#[inline(always)]
+fn scale_magnitude(
+    magnitude: u32,
+    below_zero: bool,
+    reciprocal: u64,
+    negative: bool,
+    shift: u32,
+) -> i64 {
     let s = shift - 16;
-    let magnitude = whole.unsigned_abs();
-    // `A * 2^(32 - s)` from the reciprocal's upper word (below 2^30) shifted first: shifting
-    // the 64-bit product became a 64-bit multiply, a library call on Cortex-M0. Shifted by up
-    // to 2 it fits 32 bits; further (below 2^61), its part above 32 bits only reaches the
-    // result's upper word, through a 32-bit product.
+    // `A * 2^(32 - s)` from the reciprocal's upper word (at most 2^30) shifted first: shifting
+    // the 64-bit product became a 64-bit multiply, a library call on Cortex-M0. Shifted by 0
+    // or 1 it fits 32 bits; further, its part above 32 bits only reaches the result's upper
+    // word, through a 32-bit product (by 2, it is 2^32 itself for the reciprocal 2^62 of a
+    // doubled area of 1).
     let upper = shl64(reciprocal >> 32, 32 - s);
     // On Cortex-M0 small triangles' numerators are below 2^16: two 16-bit multiplies per
     // product, not four.
@@ -1066,17 +1149,18 @@ fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
             mul_u32(magnitude, b)
         }
     };
-    let high = if s >= 30 {
+    let high = if s > 30 {
         product(upper as u32)
     } else {
         product(upper as u32)
             .wrapping_add(u64::from(magnitude.wrapping_mul((upper >> 32) as u32)) << 32)
     };
     let low = product(reciprocal as u32);
-    let below = (whole < 0) != negative;
+    let below = below_zero != negative;
     let half = shl64(1, s - 1);
-    // `low` is below 2^31 * 2^32: adding half a unit cannot carry out.
-    let quotient = high.wrapping_add(shr64(low + if below { half - 1 } else { half }, s));
+    let rounding = if below { half - 1 } else { half };
+    // `low` is at most (2^32 - 1)^2: adding half a unit (below 2^32) cannot carry out.
+    let quotient = high.wrapping_add(shr64(low + rounding, s));
     if below {
         quotient.wrapping_neg() as i64
     } else {
@@ -2033,7 +2117,7 @@ mod tests {
     #[test]
     fn whole_scaling_is_the_128_bit_one() {
         // Whole numerators (as `whole_numerators` gives: below 2^31 in magnitude), reciprocals
-        // below 2^62, shifts of every setup precision (46 and 32 are SETUP 32 and 46 for
+        // up to 2^62, shifts of every setup precision (46 and 32 are SETUP 32 and 46 for
         // whole-pixel vertices, 38 and 24 for sub-pixel ones).
         let mut rng = crate::test_rng::XorShift(0x9E37_79B9_7F4A_7C15);
         let mut next = || rng.next_u64();
@@ -2045,6 +2129,7 @@ mod tests {
             1,
             (1 << 32) - 1,
             1 << 32,
+            1 << 62,
             (1 << 62) - 1,
             1 << 61,
             1 << 7,
@@ -2074,6 +2159,92 @@ mod tests {
                     "{whole} {reciprocal} {negative} {shift}"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn wide_whole_scaling_is_the_128_bit_one() {
+        // Numerators of depth planes: whole, below 2^32 in magnitude, whose low products
+        // reach (2^32 - 1)^2; shifts of 17 to 48.
+        let mut rng = crate::test_rng::XorShift(0x6A09_E667_F3BC_C908);
+        let mut next = || rng.next_u64();
+        let edges = [
+            0i64,
+            1,
+            -1,
+            (1 << 32) - 1,
+            -(1 << 32) + 1,
+            1 << 31,
+            -(1 << 31),
+        ];
+        let reciprocals = [
+            0,
+            1,
+            (1 << 32) - 1,
+            1 << 32,
+            1 << 62,
+            (1 << 62) - 1,
+            1 << 61,
+        ];
+        for round in 0..200_000 {
+            let whole = match round % 4 {
+                0 => edges[(next() % edges.len() as u64) as usize],
+                _ => (next() >> (32 + next() % 32)) as i64 * if next() & 1 == 0 { 1 } else { -1 },
+            };
+            let reciprocal = match round % 3 {
+                0 => reciprocals[(next() % reciprocals.len() as u64) as usize],
+                _ => next() >> (2 + next() % 40),
+            };
+            let negative = next() & 1 == 0;
+            for shift in [17, 24, 30, 32, 38, 45, 46, 47, 48] {
+                assert_eq!(
+                    scale_whole_wide(whole, reciprocal, negative, shift),
+                    scale_wide(whole << 16, reciprocal, negative, shift),
+                    "{whole} {reciprocal} {negative} {shift}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn depth_gradients_are_the_fractional_ones() {
+        // Depth deltas over the whole u16 range, edges of small set-ups (whole-pixel and
+        // sub-pixel), each area's own reciprocal.
+        let mut rng = crate::test_rng::XorShift(0xBB67_AE85_84CA_A73B);
+        let mut next = || rng.next_u64();
+        let deltas = [0i64, 1, -1, 0x7FFF, 0x8000, -0x8000, 0xFFFF, -0xFFFF];
+        let sides = [1i32, -1, 2, (1 << 15) - 1, -(1 << 15) + 1, 1 << 14, 300];
+        let mut pick = |n: usize| (next() % n as u64) as usize;
+        for round in 0..100_000 {
+            let delta = |k: usize| match round % 2 {
+                0 => deltas[k],
+                _ => (k as i64 * 7919 + round) % 0x1_0000 - 0x8000,
+            };
+            let (da1, da2) = (
+                delta(pick(deltas.len())) << 16,
+                delta(pick(deltas.len())) << 16,
+            );
+            let mut side = || match pick(3) {
+                0 => sides[pick(sides.len())],
+                _ => (pick((1 << 15) - 1) as i32 - (1 << 14)) * 2 + 1,
+            };
+            let e = [side(), side(), side(), side()];
+            let area = i64::from(e[0]) * i64::from(e[3]) - i64::from(e[2]) * i64::from(e[1]);
+            if area == 0 || area.unsigned_abs() >= 1 << 31 {
+                continue;
+            }
+            let reciprocal = (1u64 << 62) / area.unsigned_abs();
+            let negative = area < 0;
+            assert_eq!(
+                wide_whole_gradients(da1, da2, e, reciprocal, negative, 46),
+                fractional_gradients::<32, 0>(da1, da2, e, reciprocal, negative),
+                "{da1} {da2} {e:?}"
+            );
+            assert_eq!(
+                wide_whole_gradients(da1, da2, e, reciprocal, negative, 38),
+                fractional_gradients::<32, 8>(da1, da2, e, reciprocal, negative),
+                "{da1} {da2} {e:?}"
+            );
         }
     }
 
