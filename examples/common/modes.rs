@@ -183,7 +183,7 @@ impl Mode {
 /// Checksums (FNV-1a of the frame's little-endian bytes, drawn on black) of every mode and
 /// scene: x86-64 (`tests/firmware_frames.rs`), Cortex-M0 and Cortex-M4 must all give these.
 /// `GouraudZ`, `Band` and `BandCache` draw the `Gouraud` image: each triangle is nearer than those before.
-pub const EXPECTED: [(Mode, Scene, u32); 72] = [
+pub const EXPECTED: [(Mode, Scene, u32); 90] = [
     (Mode::Flat, Scene::Big, 0x43168cbe),
     (Mode::Flat, Scene::Small, 0xbc014761),
     (Mode::Flat, Scene::Mesh, 0xf6e627c5),
@@ -256,6 +256,24 @@ pub const EXPECTED: [(Mode, Scene, u32); 72] = [
     (Mode::AntiAliasedSub, Scene::Small, 0x827ee315),
     (Mode::AntiAliasedSub, Scene::Mesh, 0xd8b81fd5),
     (Mode::AntiAliasedSub, Scene::Scene200, 0x8b7f45fd),
+    (Mode::Flat, Scene::Tiny, 0xf8c15fbf),
+    (Mode::Gouraud, Scene::Tiny, 0xeb994206),
+    (Mode::GouraudZ, Scene::Tiny, 0xeb994206),
+    (Mode::TexNearest, Scene::Tiny, 0x08b44776),
+    (Mode::TexBilinear, Scene::Tiny, 0xfeb1bdb6),
+    (Mode::Band, Scene::Tiny, 0xeb994206),
+    (Mode::Translucent, Scene::Tiny, 0x711565dd),
+    (Mode::GouraudDither, Scene::Tiny, 0xc46900f2),
+    (Mode::AntiAliased, Scene::Tiny, 0x43cbdbb1),
+    (Mode::FlatSub, Scene::Tiny, 0x6924323e),
+    (Mode::GouraudSub, Scene::Tiny, 0x7c689dd7),
+    (Mode::GouraudZSub, Scene::Tiny, 0x7c689dd7),
+    (Mode::TexNearestSub, Scene::Tiny, 0xc8f49661),
+    (Mode::PerspNearest, Scene::Tiny, 0x788886de),
+    (Mode::PerspBilinear, Scene::Tiny, 0xfeb1bdb6),
+    (Mode::BandCache, Scene::Tiny, 0xeb994206),
+    (Mode::AntiAliasedSub, Scene::Tiny, 0xd655c96c),
+    (Mode::TranslucentFlat, Scene::Tiny, 0xf91e692e),
 ];
 
 /// The expected checksum of `mode` on `scene`.

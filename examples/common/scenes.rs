@@ -114,10 +114,20 @@ pub enum Scene {
     /// 200 overlapping triangles of a few hundred to a few thousand pixels each, as a 3D
     /// scene of small objects gives (the band-rendering benchmark).
     Scene200,
+    /// 3,000 triangles of a doubled area of 1 or 2 (half-pixel and one-pixel triangles,
+    /// slivers among them), their vertices in every order: the smallest set-ups' edge cases,
+    /// where the area's reciprocal is largest.
+    Tiny,
 }
 
 impl Scene {
-    pub const ALL: [Scene; 4] = [Scene::Big, Scene::Small, Scene::Mesh, Scene::Scene200];
+    pub const ALL: [Scene; 5] = [
+        Scene::Big,
+        Scene::Small,
+        Scene::Mesh,
+        Scene::Scene200,
+        Scene::Tiny,
+    ];
 
     pub fn parse(name: &str) -> Option<Self> {
         match name {
@@ -125,6 +135,7 @@ impl Scene {
             "small" => Some(Scene::Small),
             "mesh" => Some(Scene::Mesh),
             "scene200" => Some(Scene::Scene200),
+            "tiny" => Some(Scene::Tiny),
             _ => None,
         }
     }
@@ -135,6 +146,7 @@ impl Scene {
             Scene::Small => "small",
             Scene::Mesh => "mesh",
             Scene::Scene200 => "scene200",
+            Scene::Tiny => "tiny",
         }
     }
 
@@ -145,6 +157,7 @@ impl Scene {
             Scene::Small => small(f),
             Scene::Mesh => mesh(40, 25, f),
             Scene::Scene200 => scene200(f),
+            Scene::Tiny => tiny(f),
         }
     }
 }
@@ -182,6 +195,26 @@ fn small(mut f: impl FnMut(SceneTriangle)) {
             p + Point::new(rng.range(0, 1), rng.range(3, 4)),
         ];
         f(triangle(&mut rng, v));
+    }
+}
+
+fn tiny(mut f: impl FnMut(SceneTriangle)) {
+    let mut rng = Rng(0x71E);
+    for _ in 0..3000 {
+        let p = Point::new(
+            rng.range(4, WIDTH as i32 - 5),
+            rng.range(4, HEIGHT as i32 - 5),
+        );
+        // (0, 0), (w, 0), (k, 1): a doubled area of w, a sliver when k is far from 0.
+        let (w, k) = (rng.range(1, 2), rng.range(-3, 3));
+        let (sx, sy) = (2 * rng.range(0, 1) - 1, 2 * rng.range(0, 1) - 1);
+        let corner = |x: i32, y: i32| p + Point::new(sx * x, sy * y);
+        let v = [corner(0, 0), corner(w, 0), corner(k, 1)];
+        let first = rng.range(0, 2) as usize;
+        f(triangle(
+            &mut rng,
+            [v[first], v[(first + 1) % 3], v[(first + 2) % 3]],
+        ));
     }
 }
 

@@ -551,7 +551,8 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
 
 /// What set-ups of colour channels (`u8`, as raw 16.16) know of their values: whole, and
 /// below 2^8. A set-up's `WHOLE_BITS` (0 when nothing is known, as for texture coordinates
-/// and shader attributes) lets it take the whole-valued gradients only (see [`whole_numerators_of`]).
+/// and shader attributes) lets it take the whole-valued gradients only (see
+/// [`whole_numerators_of`]).
 pub(crate) const CHANNEL_BITS: u32 = 8;
 
 /// What depth set-ups (`u16`, as raw 16.16) know of their values: whole, and below 2^16 (see
