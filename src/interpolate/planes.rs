@@ -2092,6 +2092,7 @@ mod tests {
         // middle word, and exact halves.
         let words = [
             (1 << 32) - 1,
+            1 << 62,
             (1 << 62) - 1,
             (1 << 48) + (1 << 32) - 1,
             ((1 << 30) - 1) << 32,
