@@ -80,7 +80,8 @@ pub trait Shape: sealed::Sealed {
     /// [`Shape::planes`] of the values `values` gives, computed only where the planes
     /// are made (band rendering may have them already; the rare exact set-up takes them
     /// through memory, where the common one need not). Every value is whole and below
-    /// `2^WHOLE_BITS` in magnitude (0 when nothing is known; colour channels: `CHANNEL_BITS`).
+    /// `2^WHOLE_BITS` in magnitude (0 when nothing is known; colour channels:
+    /// `CHANNEL_BITS`, depths: `DEPTH_BITS`).
     #[doc(hidden)]
     #[inline(always)]
     fn planes_with<const N: usize, const SETUP: u32, const WHOLE_BITS: u32>(

@@ -1027,9 +1027,17 @@ fn whole_numerators(da1: i64, da2: i64, e: [i32; 4]) -> Option<[i32; 2]> {
     if !small(da1) || !small(da2) {
         return None;
     }
+    Some(level_numerators(da1, da2, e))
+}
+
+/// [`whole_numerators`]'s numerators, untested: deltas whole and below 2^15 levels (2^31
+/// raw), so that each product is below 2^30 in magnitude. (Depths, up to 2^16 levels apart,
+/// take [`wide_whole_gradients`], whose differences need 64 bits.)
+#[inline(always)]
+fn level_numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i32; 2] {
     let [ex1, ey1, ex2, ey2] = e;
     let (l1, l2) = (da1 as i32 >> 16, da2 as i32 >> 16);
-    Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
+    [l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2]
 }
 
 /// [`whole_numerators`] for values known to be whole and below `2^WHOLE_BITS` in magnitude
@@ -1050,9 +1058,7 @@ fn whole_numerators_of<const WHOLE_BITS: u32>(da1: i64, da2: i64, e: [i32; 4]) -
             && da2.unsigned_abs() < 1 << (16 + WHOLE_BITS),
         "{da1} {da2}"
     );
-    let [ex1, ey1, ex2, ey2] = e;
-    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
-    Some([l1 * ey2 - l2 * ey1, l2 * ex1 - l1 * ex2])
+    Some(level_numerators(da1, da2, e))
 }
 
 /// The gradients `[dx, dy]` of a small triangle's depth plane (values whole and below
