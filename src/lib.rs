@@ -62,6 +62,7 @@
     clippy::needless_range_loop
 )]
 
+mod arch;
 pub mod band;
 pub mod coverage;
 pub mod depth;

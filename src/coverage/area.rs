@@ -267,7 +267,7 @@ impl<P: Coord> Edge<P> {
 /// on every Cortex-M.
 #[inline(always)]
 fn ratio_by_digits(rows: u32, across: u32) -> u64 {
-    if cfg!(not(target_has_atomic = "32")) {
+    if !crate::arch::DIVIDES {
         return ratio_by_inverse(rows, across);
     }
     let high = (rows << 16) / across;
@@ -278,7 +278,6 @@ fn ratio_by_digits(rows: u32, across: u32) -> u64 {
 /// [`ratio_by_digits`] without a division, for Cortex-M0 (where each is a library call of
 /// about 130 instructions): `rows 2^32` is the base-2^16 digits `rows, 0, 0`, divided by
 /// [`divide_by_inverse`]. Exact. Out of line: one copy.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(never)]
 fn ratio_by_inverse(rows: u32, across: u32) -> u64 {
     if across <= 1 {

@@ -458,7 +458,7 @@ impl<'a, 'b, D: DrawTarget> DepthTarget<'a, 'b, D> {
             write: self.write,
             offset: self.offset,
             // Cores with a divider make the area's reciprocal again (see `AreaMemo`).
-            memo: cfg!(not(target_has_atomic = "32")).then_some(&memo),
+            memo: (!crate::arch::DIVIDES).then_some(&memo),
         };
         style.paint(triangle, setup, visitor).unwrap_or(Ok(()))
     }

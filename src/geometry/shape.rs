@@ -178,7 +178,7 @@ impl Shape for Triangle {
         // then no longer makes the small one store them first: Gouraud -3% per small triangle
         // on Cortex-M4F and x86-64); on Cortex-M0 both set-ups are calls that take them through
         // memory, and made there they measured 1% more per small depth-tested triangle.
-        if cfg!(target_has_atomic = "32") {
+        if crate::arch::DIVIDES {
             Planes::new_with(self.vertices, values, bias, reference, memo)
         } else {
             Planes::new_whole::<WHOLE_BITS>(self.vertices, values(), bias, reference, memo)
@@ -276,7 +276,7 @@ impl Shape for SubPixelTriangle {
         if let Some(whole) = self.whole() {
             return whole.planes_with::<N, SETUP, WHOLE_BITS>(values, bias, reference, memo);
         }
-        if !cfg!(target_has_atomic = "32") {
+        if !crate::arch::DIVIDES {
             let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
             let values = values();
             return Planes::new_subpixel_whole::<WHOLE_BITS>(raw, values, bias, reference, memo);

@@ -177,7 +177,7 @@ fn low_word_shifted(value: i64, shift: u32) -> i32 {
 /// meets (q near 1, so a few shifts).
 #[inline(always)]
 fn normalise(q: u32) -> (u32, u32) {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         let zeros = q.leading_zeros();
         return (q << zeros, zeros);
     }
@@ -360,7 +360,7 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
         // unit lower, never to zero but for the most extreme ratios, which are clamped.
         let q = high_bits(values[0]).max(1) as u32;
         let (normal, zeros) = normalise(q);
-        let inverse = if cfg!(target_has_atomic = "32") {
+        let inverse = if crate::arch::DIVIDES {
             reciprocal_inline(normal)
         } else {
             reciprocal(normal)

@@ -74,7 +74,7 @@ impl AreaMemo {
 }
 
 /// `reciprocal(divisor)` through `memo` when there is one, on cores without a divider
-/// (Cortex-M0/M0+, which `target_has_atomic` tells apart). With one, a small area's reciprocal
+/// (Cortex-M0/M0+: see [`crate::arch::DIVIDES`]). With one, a small area's reciprocal
 /// is three divisions, and keeping it cost more than it saved (measured: +0.4% per small
 /// depth-tested triangle on Cortex-M4F, the memo made for every triangle).
 #[inline(always)]
@@ -85,9 +85,7 @@ fn remembered(
     reciprocal: fn(u64) -> u64,
 ) -> u64 {
     match memo {
-        Some(memo) if cfg!(not(target_has_atomic = "32")) => {
-            memo.get(divisor, subpixel, reciprocal)
-        }
+        Some(memo) if !crate::arch::DIVIDES => memo.get(divisor, subpixel, reciprocal),
         _ => reciprocal(divisor),
     }
 }
@@ -283,10 +281,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             let (da1, da2) = (a1 - a0, a2 - a0);
             // As in `new_small` (written out in both: one helper for the two measured 1.8% more
             // instructions per small Gouraud triangle on Cortex-M0).
-            let whole = if cfg!(not(target_has_atomic = "32")) {
-                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
-            } else {
+            let whole = if crate::arch::DIVIDES {
                 None
+            } else {
+                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
             };
             if let Some(gradients) =
                 depth_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
@@ -390,10 +388,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             // style and target, every value takes the second path: on Cortex-M4F the first
             // beside it measured -5 to -6% per small Gouraud triangle for 5.3 KB more in the
             // every-mode firmware, and alone +9%. Both give the same gradients, bit for bit.
-            let whole = if cfg!(not(target_has_atomic = "32")) {
-                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
-            } else {
+            let whole = if crate::arch::DIVIDES {
                 None
+            } else {
+                whole_numerators_of::<WHOLE_BITS>(da1, da2, e)
             };
             if let Some(gradients) =
                 depth_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
@@ -631,7 +629,7 @@ fn rotate_into<V: Copy, const N: usize>(
 #[cfg_attr(target_arch = "arm", inline(never))]
 #[cfg_attr(not(target_arch = "arm"), inline(always))]
 fn reciprocal_2_62(divisor: u64) -> u64 {
-    if cfg!(target_arch = "arm") {
+    if crate::arch::ARM {
         match u32::try_from(divisor) {
             Ok(d @ 1..=0xFFFF) => reciprocal_small(d),
             _ => div_rem_u64(1 << 62, divisor).0,
@@ -651,12 +649,12 @@ fn reciprocal_2_62(divisor: u64) -> u64 {
 fn reciprocal_2_62_subpixel(divisor: u64) -> u64 {
     // Where 32-bit division is an instruction, areas under 2^24 (triangles under 128 pixels²,
     // most small ones) by five of them: 80 instructions less per setup on Cortex-M4F.
-    let divides = cfg!(target_arch = "arm") && cfg!(target_has_atomic = "32");
+    let divides = crate::arch::ARM && crate::arch::DIVIDES;
     match u32::try_from(divisor) {
-        Ok(d @ 1..=0xFFFF) if cfg!(target_arch = "arm") => reciprocal_small(d),
+        Ok(d @ 1..=0xFFFF) if crate::arch::ARM => reciprocal_small(d),
         Ok(d @ 0x1_0000..=0xFF_FFFF) if divides => reciprocal_by_digits::<8>(d),
-        Ok(d @ 0x1_0000..=0xFF_FFFF) if cfg!(target_arch = "arm") => reciprocal_by_halves(d),
-        Ok(d @ 0x1_0000..=0x7FFF_FFFF) if cfg!(target_arch = "arm") => reciprocal_by_correction(d),
+        Ok(d @ 0x1_0000..=0xFF_FFFF) if crate::arch::ARM => reciprocal_by_halves(d),
+        Ok(d @ 0x1_0000..=0x7FFF_FFFF) if crate::arch::ARM => reciprocal_by_correction(d),
         _ => (1u64 << 62) / divisor.max(1),
     }
 }
@@ -798,7 +796,7 @@ fn scale_by(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 
 /// [`TINY_RECIPROCALS`] below 128 and by [`reciprocal_by_inverse`] above.
 #[inline(always)]
 fn reciprocal_small(d: u32) -> u64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         reciprocal_by_digits::<16>(d)
     } else if let Some(&reciprocal) = TINY_RECIPROCALS.get(d as usize) {
         reciprocal
@@ -850,7 +848,7 @@ fn reciprocal_by_correction(d: u32) -> u64 {
     let magnitude = error.unsigned_abs();
     let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
     // The upper word is below 2^5: two 16-bit products on Cortex-M0, not four.
-    let high_product = if cfg!(target_has_atomic = "32") {
+    let high_product = if crate::arch::DIVIDES {
         mul_u32(high, inverse)
     } else {
         mul_16_by_32(high & 0xFFFF, inverse)
@@ -945,7 +943,6 @@ fn reciprocal_by_digits<const DIGIT: u32>(d: u32) -> u64 {
 /// wrapping `i64`: only the low 64 bits of a gradient matter. `reciprocal` is below 2^62,
 /// `numerator` below 2^62 in magnitude and `shift` at least 17. One 64 x 64 -> 128-bit
 /// product, a few multiply instructions on cores with a 32 x 32 -> 64-bit multiply.
-#[cfg_attr(not(target_has_atomic = "32"), allow(dead_code))]
 #[inline(always)]
 fn scale_wide(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     let reciprocal = if negative {
@@ -956,14 +953,12 @@ fn scale_wide(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i6
     ((i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift) as i64
 }
 
-/// [`scale_wide`], bit for bit, for small cores (Cortex-M0/M0+ and others without atomic
-/// compare-and-swap, which `target_has_atomic` tells apart), where a 64-bit multiply is a
+/// [`scale_wide`], bit for bit, for small cores (Cortex-M0/M0+: see [`crate::arch::DIVIDES`]), where a 64-bit multiply is a
 /// library call and a 128-bit product six or seven of them. Numerators that are whole multiples
 /// of 2^16 (colours and depths, whose values are integers in 16.16) drop those bits and the
 /// shift with them; numerators below 2^32 then take two 32 x 32 -> 64-bit products. On
 /// Cortex-M4 the branches cost more than they save (measured: +40% per small Gouraud
 /// triangle), so it keeps [`scale_wide`].
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(always)]
 fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     // The magnitude of the product, below 2^112.
@@ -999,7 +994,6 @@ fn scale_split(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i
 /// `magnitude * reciprocal` in full for [`scale_split`]'s wide numerators (perspective planes'):
 /// four 32 x 32-bit products, where a 128-bit one is several 64-bit library multiplies. Out of
 /// line, so that the common setup stays small enough to inline.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(never)]
 fn wide_product(magnitude: u64, reciprocal: u64) -> u128 {
     let (upper, lower) = ((magnitude >> 32) as u32, magnitude as u32);
@@ -1075,7 +1069,7 @@ fn depth_gradients<const WHOLE_BITS: u32>(
     negative: bool,
     shift: u32,
 ) -> Option<[i64; 2]> {
-    if cfg!(target_has_atomic = "32") || WHOLE_BITS != DEPTH_BITS {
+    if crate::arch::DIVIDES || WHOLE_BITS != DEPTH_BITS {
         return None;
     }
     Some(wide_whole_gradients(
@@ -1150,7 +1144,7 @@ fn scale_magnitude(
     // On Cortex-M0 small triangles' numerators are below 2^16: two 16-bit multiplies per
     // product, not four.
     let product = |b: u32| {
-        if cfg!(not(target_has_atomic = "32")) && magnitude < 1 << 16 {
+        if !crate::arch::DIVIDES && magnitude < 1 << 16 {
             mul_16_by_32(magnitude, b)
         } else {
             mul_u32(magnitude, b)
@@ -1180,7 +1174,7 @@ fn scale_magnitude(
 /// instructions, twelve per small sub-pixel Gouraud triangle) from 32-bit multiplies.
 #[inline(always)]
 fn fraction_of(g: i64, f: i64) -> i64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         (g >> 8).wrapping_mul(f).wrapping_add(((g & 255) * f) >> 8)
     } else {
         fraction_of_split(g, f)
@@ -1188,7 +1182,6 @@ fn fraction_of(g: i64, f: i64) -> i64 {
 }
 
 /// [`fraction_of`] from 32-bit multiplies.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(always)]
 fn fraction_of_split(g: i64, f: i64) -> i64 {
     let rest = ((g & 255) as u32 * f as u32) >> 8;
@@ -1198,10 +1191,16 @@ fn fraction_of_split(g: i64, f: i64) -> i64 {
     product.wrapping_add(u64::from(rest)) as i64
 }
 
-#[cfg(not(target_has_atomic = "32"))]
-use scale_split as scale;
-#[cfg(target_has_atomic = "32")]
-use scale_wide as scale;
+/// `numerator * ±reciprocal / 2^shift`, rounded half up: [`scale_wide`] where a 64-bit
+/// multiply is an instruction, [`scale_split`] where it is not (see [`crate::arch`]).
+#[inline(always)]
+fn scale(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    if crate::arch::DIVIDES {
+        scale_wide(numerator, reciprocal, negative, shift)
+    } else {
+        scale_split(numerator, reciprocal, negative, shift)
+    }
+}
 
 /// The gradient numerators `[da1 * ey2 - da2 * ey1, da2 * ex1 - da1 * ex2]` of a plane with
 /// value deltas `da1`, `da2` along edges `e = [ex1, ey1, ex2, ey2]` (each below 2^15).
@@ -1213,10 +1212,7 @@ use scale_wide as scale;
 #[inline(always)]
 fn numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
     // Cores with a 64-bit multiply (see `scale_wide`) keep the plain products.
-    if cfg!(not(target_has_atomic = "32"))
-        && da1.unsigned_abs() < 1 << 32
-        && da2.unsigned_abs() < 1 << 32
-    {
+    if !crate::arch::DIVIDES && da1.unsigned_abs() < 1 << 32 && da2.unsigned_abs() < 1 << 32 {
         numerators_split(da1, da2, e)
     } else {
         numerators_wide(da1, da2, e)
@@ -1368,7 +1364,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
         } else {
             let columns = i64::from(x) - i64::from(last_x);
             let rows = i64::from(y) - i64::from(last_y);
-            if cfg!(target_has_atomic = "32") {
+            if crate::arch::DIVIDES {
                 // One multiply per product: inline, as the other moves.
                 (0..M).for_each(|k| self.add(k, self.product(k, columns, rows)));
             } else {
@@ -1397,7 +1393,6 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     /// [`Planes::at_exact`] would evaluate it, by [`mul_count`] where the moves fit (in
     /// `at_exact`, inline in every span loop's set-up, that measured slower). Out of line, so
     /// that the near moves keep their registers.
-    #[cfg_attr(target_has_atomic = "32", allow(dead_code))]
     #[inline(never)]
     fn move_far<const M: usize>(&self, columns: i64, rows: i64) {
         match (i16::try_from(columns), i16::try_from(rows)) {

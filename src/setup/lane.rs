@@ -222,12 +222,12 @@ impl Lane for i64 {
 
 /// `(floor(value / divisor), value mod divisor)` for a positive divisor, for quotients expected
 /// small (an edge's pixels per row): by [`div_rem_floor_counted`] on cores without a divider
-/// (Cortex-M0/M0+: no compare-and-swap either, which is what `target_has_atomic` can tell), by
+/// (Cortex-M0/M0+, see [`crate::arch::DIVIDES`]), by
 /// the divide instruction elsewhere. The 32-bit lane's division (every edge of a whole-pixel
 /// triangle steeper than one pixel a row) and the sub-pixel edges' start take it.
 #[inline(always)]
 pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         floor_div_rem!(value, divisor)
     } else {
         div_rem_floor_counted(value, divisor)
@@ -241,7 +241,6 @@ pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
 /// 64 measured worse); larger ones by that division, which is linked anyway (a
 /// shift-and-subtract loop for them cost the flat share 180 bytes for no measurable gain). Out
 /// of line: one copy.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(never)]
 pub(crate) fn div_rem_floor_counted(value: i32, divisor: i32) -> (i32, i32) {
     let d = divisor.max(1) as u32;
@@ -275,7 +274,7 @@ pub(crate) fn div_rem_floor_counted(value: i32, divisor: i32) -> (i32, i32) {
 /// is a call (Cortex-M0: three calls of about forty instructions for an `i64` product).
 #[inline(always)]
 pub(crate) fn mul_small(value: i64, small: u32) -> i64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         value.wrapping_mul(i64::from(small))
     } else {
         mul_small_split(value, small)
@@ -295,7 +294,7 @@ fn mul_small_split(value: i64, small: u32) -> i64 {
 /// a 64-bit multiply is a call of about forty instructions). The same bits either way.
 #[inline(always)]
 pub(crate) fn mul_u32(a: u32, b: u32) -> u64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         u64::from(a) * u64::from(b)
     } else {
         widening_mul(a, b)
@@ -306,7 +305,7 @@ pub(crate) fn mul_u32(a: u32, b: u32) -> u64 {
 /// on Cortex-M0.
 #[inline(always)]
 pub(crate) fn mul_i32_u32(a: i32, b: u32) -> i64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         i64::from(a) * i64::from(b)
     } else {
         mul_i32_u32_split(a, b)
@@ -335,7 +334,6 @@ pub(crate) fn widening_mul(a: u32, b: u32) -> u64 {
 
 /// `a * b` in full for `a` below 2^16: two 16-bit multiplies (Cortex-M0 has no wider one).
 /// Tested on every host.
-#[cfg_attr(target_has_atomic = "32", allow(dead_code))]
 #[inline(always)]
 pub(crate) fn mul_16_by_32(a: u32, b: u32) -> u64 {
     debug_assert!(a < 1 << 16);
@@ -367,7 +365,7 @@ pub(crate) fn shr64(value: u64, n: u32) -> u64 {
 /// instructions (Cortex-M0), one multiply elsewhere. The same bits either way.
 #[inline(always)]
 pub(crate) fn mul_count(value: i64, count: i16) -> i64 {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         value.wrapping_mul(i64::from(count))
     } else {
         mul_count_split(value, count)
@@ -433,7 +431,7 @@ fn div_rem_u64_bitwise(n: u64, d: u64) -> (u64, u64) {
 /// which divides 32 bits in hardware. 64-bit hosts keep the library's.
 #[inline(never)]
 pub(crate) fn floor_div_rem_i128(n: i128, d: i128) -> (i128, i128) {
-    if cfg!(target_pointer_width = "64") {
+    if crate::arch::WORD_64 {
         let d = d.max(1);
         (n.div_euclid(d), n.rem_euclid(d))
     } else {

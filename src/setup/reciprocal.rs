@@ -10,7 +10,7 @@ use super::lane::{mul_i32_u32, mul_u32, widening_mul};
 /// instruction from Cortex-M3 up and a library call on Cortex-M0, where five steps do.
 #[inline(always)]
 pub(crate) fn normalise(d: u32) -> (u32, u32) {
-    if cfg!(target_has_atomic = "32") {
+    if crate::arch::DIVIDES {
         let shift = d.leading_zeros();
         return (d << shift, shift);
     }

@@ -401,7 +401,7 @@ where
         // From Cortex-M3 up, one span loop per parity of the first column, so that the loop
         // keeps three steps in registers, not four (see `DitheredLanes`); Cortex-M0 keeps one
         // loop (flash).
-        if cfg!(target_has_atomic = "32") {
+        if crate::arch::DIVIDES {
             if run.x & 1 == 0 {
                 let shader = DitheredLanes::<C, N, EVEN>(lanes, step, PhantomData);
                 return shade_span(&shader, run, offset, target);

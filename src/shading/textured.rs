@@ -779,7 +779,7 @@ where
         let tint = self.tint.as_ref().map(|t| (t.at(run.x, run.y), t.step));
         // Nearest pixels are cheap enough for the call per sub-span to show; from Cortex-M3 up
         // bilinear ones gain too.
-        let inline = FILTER == NO || cfg!(target_has_atomic = "32");
+        let inline = FILTER == NO || crate::arch::DIVIDES;
         let mut sub_spans = planes.sub_spans(run.x, run.y, run.len, inline);
         while sub_spans.left > 0 {
             let sub_span = planes.next_sub_span(&mut sub_spans, inline);
@@ -830,10 +830,11 @@ where
 #[inline(always)]
 fn across(steps: u32, gradient: i64) -> Option<i64> {
     let magnitude = gradient.unsigned_abs();
-    #[cfg(target_has_atomic = "32")]
-    let fits = steps < 1 << 16 && magnitude < 1 << 47;
-    #[cfg(not(target_has_atomic = "32"))]
-    let fits = steps < 1 << 16 && magnitude < 1 << 47 || steps < 1 << 8 && magnitude < 1 << 55;
+    let fits = if crate::arch::DIVIDES {
+        steps < 1 << 16 && magnitude < 1 << 47
+    } else {
+        steps < 1 << 16 && magnitude < 1 << 47 || steps < 1 << 8 && magnitude < 1 << 55
+    };
     if fits {
         let product = mul_small(magnitude as i64, steps); // below 2^63
         Some(if gradient < 0 { -product } else { product })
@@ -915,7 +916,7 @@ where
             // On Cortex-M0 written out: -2.5 to -3% per nearest triangle there (and at
             // `opt-level = "s"` the array's `map` stayed a loop); from M3 up the `map`
             // measured 2 to 4% faster.
-            let across = if cfg!(target_has_atomic = "32") {
+            let across = if crate::arch::DIVIDES {
                 steps.map(|step| across(run.len - 1, step))
             } else {
                 [across(run.len - 1, steps[0]), across(run.len - 1, steps[1])]
