@@ -180,14 +180,17 @@ impl<'a> DepthBuffer<'a> {
         Size::new(self.width, self.height)
     }
 
-    /// The depths of `len` pixels of row `y` from column `x`, both relative to the buffer.
+    /// The depths of `len` pixels of row `y` from column `x`, both relative to the buffer,
+    /// which the run lies in (the depth pass's spans lie in the window the buffer covers): only
+    /// the slice bound is checked, so a run past the row's end would go on in the next row,
+    /// never outside the buffer.
     #[inline(always)]
     pub(crate) fn run_mut(&mut self, x: u32, y: u32, len: u32) -> Option<&mut [u16]> {
-        if u64::from(x) + u64::from(len) > u64::from(self.width) {
-            return None;
-        }
-        let start = y as usize * self.width as usize + x as usize;
-        self.depths.get_mut(start..start + len as usize)
+        debug_assert!(u64::from(x) + u64::from(len) <= u64::from(self.width));
+        let start = (y as usize)
+            .wrapping_mul(self.width as usize)
+            .wrapping_add(x as usize);
+        self.depths.get_mut(start..start.wrapping_add(len as usize))
     }
 }
 

@@ -65,6 +65,12 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
             origin: (self.window.top_left.x, self.window.top_left.y),
             flip,
             slack,
+            // Written, nearer-wins tests (`flip` zero) only: the common case.
+            short_spans: if flip == 0 && self.write {
+                SHORT_SPAN
+            } else {
+                0
+            },
             write: self.write,
             offset: self.offset,
         };
@@ -89,6 +95,9 @@ struct DepthSpans<'a, 'b, 'p, D, P> {
     /// The test as `(depth ^ flip) < (stored ^ flip) + slack`.
     flip: u16,
     slack: u32,
+    /// Spans up to this long are tested and written in one pass ([`SHORT_SPAN`], or 0 for
+    /// tests and writes the one pass does not serve): one comparison per span.
+    short_spans: u32,
     write: bool,
 }
 
@@ -111,7 +120,7 @@ where
         let step = self.depth.step[0];
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
 
-        if span.len <= SHORT_SPAN && self.flip == 0 && self.write {
+        if span.len <= self.short_spans {
             // Short spans (the rows of small and mesh triangles): tested and written in one
             // pass that stops at the first pixel failing, cheaper there than the two passes
             // below (measured: Gouraud + depth per `mesh` triangle -5% on Cortex-M0 and -6%
