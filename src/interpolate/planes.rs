@@ -481,11 +481,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     }
 
     /// Makes these planes' first of value `base` and gradients `dx`, `dy` (wrapping) from the
-    /// same origin, the others zero, with no steps along a span (their user steps on its own):
-    /// for [`TrackedPlanes::first_at`].
+    /// same origin, for [`TrackedPlanes::first_at`], whose user reads nothing else (its own
+    /// step along a span included). The rest stays as it was: zeroing it cost 15 to 60
+    /// instructions per triangle (Cortex-M0 and M4F Gouraud, measured 2026-12-05).
     #[inline(always)]
     pub(crate) fn keep_first(&mut self, base: i64, dx: i64, dy: i64) {
-        *self = Self::empty(self.origin);
         self.base[0] = base;
         self.dx[0] = dx;
         self.dy[0] = dy;
