@@ -94,7 +94,7 @@ fn triangle() -> impl Strategy<Value = [Point; 3]> {
 
 /// Triangles within a 5x5 square, often of a doubled area of 1 or 2: the smallest set-ups,
 /// whose one or two pixels are vertices (on Cortex-M0 a doubled area of 1 once lost its
-/// gradients; `--cfg trirast_emulate="cortex-m0"` runs this on the host).
+/// gradients; `TRIRAST_EMULATE=cortex-m0` runs this on the host).
 fn tiny_triangle() -> impl Strategy<Value = [Point; 3]> {
     let offset = || (-2..=2i32, -2..=2i32);
     ((-40..360i32, -40..280i32), [offset(), offset(), offset()])

@@ -191,10 +191,6 @@ fn blend_channels<C: ChannelColor>(corners: [C; 4], wx: u32, wy: u32) -> C {
 /// `Rgb565`-layout bilinear blend with 8-bit weights, all channels in one 64-bit word: the
 /// channels are spread to 21-, 22- and 21-bit lanes, wide enough for each channel times 2^16,
 /// so two rounds of linear interpolation (across, then down) stay in their lanes.
-#[cfg(all(
-    target_pointer_width = "64",
-    not(any(trirast_emulate = "cortex-m0", trirast_emulate = "cortex-m4"))
-))]
 #[inline(always)]
 fn blend_565(corners: [u16; 4], x: u32, y: u32) -> u16 {
     // Low channel at bits 0..5, middle at 21..27, high at 43..48.
@@ -281,14 +277,16 @@ macro_rules! rgb565_channels {
                 StoredPixel::load(over_565(store(self), store(under), opacity))
             }
 
-            #[cfg(all(
-                target_pointer_width = "64",
-                not(any(trirast_emulate = "cortex-m0", trirast_emulate = "cortex-m4"))
-            ))]
             #[inline(always)]
             fn bilinear(corners: [Self; 4], x: u32, y: u32) -> Self {
-                let store = <u16 as StoredPixel<Self>>::store;
-                StoredPixel::load(blend_565(corners.map(store), x, y))
+                // In one 64-bit word where registers hold one; 32-bit cores blend channel by
+                // channel.
+                if crate::arch::WORD_64 {
+                    let store = <u16 as StoredPixel<Self>>::store;
+                    StoredPixel::load(blend_565(corners.map(store), x, y))
+                } else {
+                    blend_channels(corners, x, y)
+                }
             }
 
         }
