@@ -179,7 +179,7 @@ impl Shape for Triangle {
         // on Cortex-M4F and x86-64); on Cortex-M0 both set-ups are calls that take them through
         // memory, and made there they measured 1% more per small depth-tested triangle.
         if crate::arch::DIVIDES {
-            Planes::new_with(self.vertices, values, bias, reference, memo)
+            Planes::new_with::<WHOLE_BITS>(self.vertices, values, bias, reference, memo)
         } else {
             Planes::new_whole::<WHOLE_BITS>(self.vertices, values(), bias, reference, memo)
         }
@@ -282,7 +282,7 @@ impl Shape for SubPixelTriangle {
             return Planes::new_subpixel_whole::<WHOLE_BITS>(raw, values, bias, reference, memo);
         }
         let raw = self.vertices.map(|p| (p.x.to_bits(), p.y.to_bits()));
-        Planes::new_subpixel_with(raw, values, bias, reference, memo)
+        Planes::new_subpixel_with::<WHOLE_BITS>(raw, values, bias, reference, memo)
     }
 
     #[inline(always)]

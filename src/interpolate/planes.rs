@@ -130,7 +130,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     /// store them first. (`Planes::new` is not written through this: on Cortex-M0, where
     /// both set-ups are calls, that measured 1% more per small depth-tested triangle.)
     #[inline(always)]
-    pub(crate) fn new_with(
+    pub(crate) fn new_with<const WHOLE_BITS: u32>(
         vertices: [Point; 3],
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -138,7 +138,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
         memo: Option<&AreaMemo>,
     ) -> Option<Self> {
         match edges_within(vertices.map(wide), SMALL_BITS) {
-            Some(e) => Self::new_small::<0>(vertices[0], values(), bias, e, memo),
+            Some(e) => Self::new_small::<WHOLE_BITS>(vertices[0], values(), bias, e, memo),
             None => Self::new_exact(vertices, values(), bias, reference),
         }
     }
@@ -208,7 +208,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     /// [`Planes::new_subpixel`] of the values `values` gives, made in the branch that sets up,
     /// as [`Planes::new_with`].
     #[inline(always)]
-    pub(crate) fn new_subpixel_with(
+    pub(crate) fn new_subpixel_with<const WHOLE_BITS: u32>(
         vertices: [(i32, i32); 3],
         values: impl Fn() -> [[i64; N]; 3],
         bias: i64,
@@ -217,7 +217,7 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
     ) -> Option<Self> {
         let wide = vertices.map(|(x, y)| (i64::from(x), i64::from(y)));
         match edges_within(wide, SMALL_BITS) {
-            Some(e) => Self::new_small_subpixel::<0>(wide[0], values(), bias, e, memo),
+            Some(e) => Self::new_small_subpixel::<WHOLE_BITS>(wide[0], values(), bias, e, memo),
             None => Self::new_large_subpixel(vertices, values(), bias, reference),
         }
     }
@@ -293,6 +293,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
+            } else if crate::arch::DIVIDES && WHOLE_BITS >= 1 && WHOLE_BITS <= 8 {
+                let [nx, ny] = level_numerators(da1, da2, e);
+                dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
+                dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 8>(da1, da2, e, reciprocal, area < 0);
@@ -385,9 +389,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             let (da1, da2) = (a1 - a0, a2 - a0);
             // Whole values (colours, depths) take 64-bit arithmetic (see `scale_whole`) on
             // cores without a 64-bit multiply. Elsewhere, where this setup is inline in every
-            // style and target, every value takes the second path: on Cortex-M4F the first
-            // beside it measured -5 to -6% per small Gouraud triangle for 5.3 KB more in the
-            // every-mode firmware, and alone +9%. Both give the same gradients, bit for bit.
+            // style and target, colours (known whole and below 2^8) take 32-bit numerators and
+            // one 32 x 64-bit product each (`scale_levels`: Cortex-M4F -6% per small Gouraud
+            // triangle, -3.6% with depth), everything else the 64 x 64-bit one (the Cortex-M0
+            // path there measured -5 to -6% beside it for 5.3 KB more in the every-mode
+            // firmware, and alone +9%). Every path gives the same gradients, bit for bit.
             let whole = if crate::arch::DIVIDES {
                 None
             } else {
@@ -400,6 +406,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
+            } else if crate::arch::DIVIDES && WHOLE_BITS >= 1 && WHOLE_BITS <= 8 {
+                let [nx, ny] = level_numerators(da1, da2, e);
+                dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
+                dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 0>(da1, da2, e, reciprocal, area < 0);
@@ -1114,6 +1124,19 @@ fn wide_whole_gradients(
 #[inline(always)]
 fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     scale_magnitude(whole.unsigned_abs(), whole < 0, reciprocal, negative, shift)
+}
+
+/// [`scale_wide`] of the numerator `levels * 2^16` (below 2^24 in magnitude: whole values
+/// below 2^8), bit for bit: one 32 x 64-bit product, where the 64 x 64-bit one is six
+/// multiplies. For cores with a 64-bit multiply.
+#[inline(always)]
+fn scale_levels(levels: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    let reciprocal = if negative {
+        -(reciprocal as i64)
+    } else {
+        reciprocal as i64
+    };
+    ((i128::from(levels) * i128::from(reciprocal) + (1 << (shift - 17))) >> (shift - 16)) as i64
 }
 
 /// [`scale_whole`] of a numerator below 2^32 in magnitude (a depth plane's, see
@@ -2156,10 +2179,16 @@ mod tests {
             let negative = next() & 1 == 0;
             for shift in [17, 24, 30, 32, 38, 45, 46, 47, 48] {
                 let numerator = i64::from(whole) << 16;
+                let expected = scale_wide(numerator, reciprocal, negative, shift);
                 assert_eq!(
                     scale_whole(whole, reciprocal, negative, shift),
-                    scale_wide(numerator, reciprocal, negative, shift),
+                    expected,
                     "{whole} {reciprocal} {negative} {shift}"
+                );
+                assert_eq!(
+                    scale_levels(whole, reciprocal, negative, shift),
+                    expected,
+                    "levels: {whole} {reciprocal} {negative} {shift}"
                 );
             }
         }
