@@ -297,6 +297,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
                 let [nx, ny] = level_numerators(da1, da2, e);
                 dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
                 dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
+            } else if crate::arch::DIVIDES && crate::arch::ARM && WHOLE_BITS > 8 && WHOLE_BITS <= 16
+            {
+                let [nx, ny] = wide_level_numerators(da1, da2, e);
+                dx[k] = scale_wide_levels(nx, reciprocal, area < 0, shift);
+                dy[k] = scale_wide_levels(ny, reciprocal, area < 0, shift);
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 8>(da1, da2, e, reciprocal, area < 0);
@@ -391,9 +396,12 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             // cores without a 64-bit multiply. Elsewhere, where this setup is inline in every
             // style and target, colours (known whole and below 2^8) take 32-bit numerators and
             // one 32 x 64-bit product each (`scale_levels`: Cortex-M4F -6% per small Gouraud
-            // triangle, -3.6% with depth), everything else the 64 x 64-bit one (the Cortex-M0
-            // path there measured -5 to -6% beside it for 5.3 KB more in the every-mode
-            // firmware, and alone +9%). Every path gives the same gradients, bit for bit.
+            // triangle, -3.6% with depth), on Arm depths (below 2^16) the same from 33-bit
+            // numerators (`scale_wide_levels`: -4.9% more with depth; x86-64, whose 64 x 64-bit
+            // product is one instruction, +1.3%), everything else the 64 x 64-bit one
+            // (the Cortex-M0 path there measured -5 to -6% beside it for 5.3 KB more in the
+            // every-mode firmware, and alone +9%). Every path gives the same gradients, bit for
+            // bit.
             let whole = if crate::arch::DIVIDES {
                 None
             } else {
@@ -410,6 +418,11 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
                 let [nx, ny] = level_numerators(da1, da2, e);
                 dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
                 dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
+            } else if crate::arch::DIVIDES && crate::arch::ARM && WHOLE_BITS > 8 && WHOLE_BITS <= 16
+            {
+                let [nx, ny] = wide_level_numerators(da1, da2, e);
+                dx[k] = scale_wide_levels(nx, reciprocal, area < 0, shift);
+                dy[k] = scale_wide_levels(ny, reciprocal, area < 0, shift);
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 0>(da1, da2, e, reciprocal, area < 0);
@@ -1137,6 +1150,34 @@ fn scale_levels(levels: i32, reciprocal: u64, negative: bool, shift: u32) -> i64
         reciprocal as i64
     };
     ((i128::from(levels) * i128::from(reciprocal) + (1 << (shift - 17))) >> (shift - 16)) as i64
+}
+
+/// The numerators of [`level_numerators`] for whole values below 2^16 (depths): each product
+/// below 2^31, their differences below 2^32 in magnitude.
+#[inline(always)]
+fn wide_level_numerators(da1: i64, da2: i64, e: [i32; 4]) -> [i64; 2] {
+    let [ex1, ey1, ex2, ey2] = e;
+    let (l1, l2) = ((da1 >> 16) as i32, (da2 >> 16) as i32);
+    let product = |a: i32, b: i32| i64::from(a * b);
+    [
+        product(l1, ey2) - product(l2, ey1),
+        product(l2, ex1) - product(l1, ex2),
+    ]
+}
+
+/// [`scale_levels`] of a numerator below 2^32 in magnitude (depths'): one 32 x 64-bit product
+/// of its magnitude, then its sign.
+#[inline(always)]
+fn scale_wide_levels(levels: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
+    debug_assert!(levels.unsigned_abs() < 1 << 32);
+    let magnitude = u64::from(levels.unsigned_abs() as u32);
+    let product = (u128::from(magnitude) * u128::from(reciprocal)) as i128;
+    let product = if (levels < 0) == negative {
+        product
+    } else {
+        -product
+    };
+    ((product + (1 << (shift - 17))) >> (shift - 16)) as i64
 }
 
 /// [`scale_whole`] of a numerator below 2^32 in magnitude (a depth plane's, see
@@ -2229,10 +2270,16 @@ mod tests {
             };
             let negative = next() & 1 == 0;
             for shift in [17, 24, 30, 32, 38, 45, 46, 47, 48] {
+                let expected = scale_wide(whole << 16, reciprocal, negative, shift);
                 assert_eq!(
                     scale_whole_wide(whole, reciprocal, negative, shift),
-                    scale_wide(whole << 16, reciprocal, negative, shift),
+                    expected,
                     "{whole} {reciprocal} {negative} {shift}"
+                );
+                assert_eq!(
+                    scale_wide_levels(whole, reciprocal, negative, shift),
+                    expected,
+                    "levels: {whole} {reciprocal} {negative} {shift}"
                 );
             }
         }
@@ -2277,6 +2324,24 @@ mod tests {
                 fractional_gradients::<32, 8>(da1, da2, e, reciprocal, negative),
                 "{da1} {da2} {e:?}"
             );
+            // Cores with a 64-bit multiply.
+            let [nx, ny] = wide_level_numerators(da1, da2, e);
+            for (shift, expected) in [
+                (
+                    46,
+                    fractional_gradients::<32, 0>(da1, da2, e, reciprocal, negative),
+                ),
+                (
+                    38,
+                    fractional_gradients::<32, 8>(da1, da2, e, reciprocal, negative),
+                ),
+            ] {
+                assert_eq!(
+                    [nx, ny].map(|n| scale_wide_levels(n, reciprocal, negative, shift)),
+                    expected,
+                    "levels: {da1} {da2} {e:?}"
+                );
+            }
         }
     }
 
