@@ -293,15 +293,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
-            } else if crate::arch::DIVIDES && WHOLE_BITS >= 1 && WHOLE_BITS <= 8 {
-                let [nx, ny] = level_numerators(da1, da2, e);
-                dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
-                dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
-            } else if crate::arch::DIVIDES && crate::arch::ARM && WHOLE_BITS > 8 && WHOLE_BITS <= 16
+            } else if let Some(gradients) =
+                level_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
             {
-                let [nx, ny] = wide_level_numerators(da1, da2, e);
-                dx[k] = scale_wide_levels(nx, reciprocal, area < 0, shift);
-                dy[k] = scale_wide_levels(ny, reciprocal, area < 0, shift);
+                [dx[k], dy[k]] = gradients;
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 8>(da1, da2, e, reciprocal, area < 0);
@@ -414,15 +409,10 @@ impl<const N: usize, const SETUP: u32> Planes<N, SETUP> {
             } else if let Some([wx, wy]) = whole {
                 dx[k] = scale_whole(wx, reciprocal, area < 0, shift);
                 dy[k] = scale_whole(wy, reciprocal, area < 0, shift);
-            } else if crate::arch::DIVIDES && WHOLE_BITS >= 1 && WHOLE_BITS <= 8 {
-                let [nx, ny] = level_numerators(da1, da2, e);
-                dx[k] = scale_levels(nx, reciprocal, area < 0, shift);
-                dy[k] = scale_levels(ny, reciprocal, area < 0, shift);
-            } else if crate::arch::DIVIDES && crate::arch::ARM && WHOLE_BITS > 8 && WHOLE_BITS <= 16
+            } else if let Some(gradients) =
+                level_gradients::<WHOLE_BITS>(da1, da2, e, reciprocal, area < 0, shift)
             {
-                let [nx, ny] = wide_level_numerators(da1, da2, e);
-                dx[k] = scale_wide_levels(nx, reciprocal, area < 0, shift);
-                dy[k] = scale_wide_levels(ny, reciprocal, area < 0, shift);
+                [dx[k], dy[k]] = gradients;
             } else {
                 [dx[k], dy[k]] =
                     fractional_gradients::<SETUP, 0>(da1, da2, e, reciprocal, area < 0);
@@ -1137,6 +1127,37 @@ fn wide_whole_gradients(
 #[inline(always)]
 fn scale_whole(whole: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
     scale_magnitude(whole.unsigned_abs(), whole < 0, reciprocal, negative, shift)
+}
+
+/// The gradients `[dx, dy]` of whole values below `2^WHOLE_BITS` (colours: 8, depths: 16) on
+/// cores with a 64-bit multiply, from 32-bit numerators and one 32 x 64-bit product each
+/// ([`scale_levels`], [`scale_wide_levels`]; depths on Arm only: x86-64's 64 x 64-bit product
+/// is one instruction): `None` elsewhere and for other values, which take
+/// [`fractional_gradients`]. Bit for bit its gradients.
+#[inline(always)]
+fn level_gradients<const WHOLE_BITS: u32>(
+    da1: i64,
+    da2: i64,
+    e: [i32; 4],
+    reciprocal: u64,
+    negative: bool,
+    shift: u32,
+) -> Option<[i64; 2]> {
+    if crate::arch::DIVIDES && WHOLE_BITS >= 1 && WHOLE_BITS <= 8 {
+        let [nx, ny] = level_numerators(da1, da2, e);
+        Some([
+            scale_levels(nx, reciprocal, negative, shift),
+            scale_levels(ny, reciprocal, negative, shift),
+        ])
+    } else if crate::arch::DIVIDES && crate::arch::ARM && WHOLE_BITS > 8 && WHOLE_BITS <= 16 {
+        let [nx, ny] = wide_level_numerators(da1, da2, e);
+        Some([
+            scale_wide_levels(nx, reciprocal, negative, shift),
+            scale_wide_levels(ny, reciprocal, negative, shift),
+        ])
+    } else {
+        None
+    }
 }
 
 /// [`scale_wide`] of the numerator `levels * 2^16` (below 2^24 in magnitude: whole values
