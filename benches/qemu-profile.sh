@@ -9,9 +9,10 @@
 #
 # TARGET is thumbv6m-none-eabi (run on mps2-an385) or thumbv7em-none-eabihf (mps2-an386). The
 # listing (target/qemu-profile/hot.s) shows every instruction executed at least MIN_COUNT times
-# (default: once per triangle of the scene), function by function, with its count: divide by the
-# scene's triangles for per-triangle figures. Scene generation runs in `main` and is listed
-# there; the drawing runs in `modes::draw_*` and below.
+# (default: once per triangle of the scene), function by function, with its count. The summary
+# gives each function's instructions per triangle, split into those run about once per triangle
+# (set-up), more often (rows, spans, pixels) and less often. Scene generation runs in `main` and
+# is listed there; the drawing runs in `modes::draw_*` and below.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=$1 only=$2 min=${3:-}
@@ -24,12 +25,14 @@ out=target/qemu-profile
 mkdir -p "$out"
 FW_ONLY=$only CARGO_TARGET_DIR=$out/build ../shared/embedded/xcargo "$target" build --profile measure -q --example firmware --features firmware
 elf=$out/build/$target/measure/examples/firmware
-timeout 600 qemu-system-arm -machine "$board" -nographic -semihosting-config enable=on,target=native \
-  -icount shift=3 -d in_asm,exec,nochain -D "$out/qemu.log" -kernel "$elf" | grep 'checksum='
+result=$(timeout 600 qemu-system-arm -machine "$board" -nographic -semihosting-config enable=on,target=native \
+  -icount shift=3 -d in_asm,exec,nochain -D "$out/qemu.log" -kernel "$elf" | grep 'checksum=')
+echo "$result"
+triangles=$(sed -n 's/.* triangles=\([0-9]*\).*/\1/p' <<<"$result" | head -1)
 command -v llvm-nm >/dev/null || { echo "needs llvm-nm and llvm-objdump (Debian: llvm)" >&2; exit 1; }
-python3 - "$elf" "$out" "$min" <<'PY'
+python3 - "$elf" "$out" "$min" "${triangles:-0}" <<'PY'
 import bisect, collections, re, subprocess, sys
-elf, out, min_count = sys.argv[1], sys.argv[2], sys.argv[3]
+elf, out, min_count, triangles = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
 blocks, current, counts = {}, None, collections.Counter()
 for line in open(f"{out}/qemu.log", errors="replace"):
     if line.startswith("IN:"):
@@ -55,10 +58,29 @@ per_function = collections.Counter()
 for address, n in counts.items():
     f = function(address)
     per_function[f] += n
+# Per function, its instructions split by how often each ran against the scene's triangles:
+# about once per triangle (set-up), more often (rows, spans, pixels), less often (rare paths,
+# and whatever ran outside the drawing).
+split = collections.defaultdict(lambda: [0, 0, 0])
+for address, n in counts.items():
+    f = function(address)
+    if triangles and abs(n - triangles) <= triangles // 500 + 2:
+        split[f][0] += n
+    elif triangles and n > triangles:
+        split[f][1] += n
+    else:
+        split[f][2] += n
 total = sum(counts.values())
 print(f"{total} instructions executed in all (start-up and scene generation included)")
+if triangles:
+    print(f"per triangle ({triangles} triangles): all = once + more often + less often")
 for f, n in per_function.most_common(15):
-    print(f"{n:12d} {100 * n / total:5.1f}%  {f[2][:100] if f else '?'}")
+    name = f[2][:100] if f else '?'
+    if triangles:
+        once, more, less = (v / triangles for v in split[f])
+        print(f"{n:12d} {100 * n / total:5.1f}%  {n / triangles:9.1f} = {once:7.1f} + {more:7.1f} + {less:7.1f}  {name}")
+    else:
+        print(f"{n:12d} {100 * n / total:5.1f}%  {name}")
 threshold = int(min_count) if min_count else 1
 with open(f"{out}/hot.s", "w") as listing:
     for f, n in per_function.most_common(30):
