@@ -80,8 +80,8 @@ impl<T: Lane> SubEdge<T> {
         let moved = (upper_x & 0xFF) + down * step;
         let mut x = (upper_x >> 8) + (moved >> 8);
         let rest_k = dy * (moved & 0xFF) + down * rest + bias;
-        // Cores without a divider (Cortex-M0/M0+, see `crate::arch`) count the last pixels out; the others divide (counting
-        // measured +3% per small sub-pixel triangle on Cortex-M4F).
+        // Cores without a divider (Cortex-M0/M0+, see `crate::arch`) count the last pixels out;
+        // the others divide (counting measured +3% per small sub-pixel triangle on Cortex-M4F).
         let error = if crate::arch::DIVIDES {
             let (rest_k, d) = (rest_k as u32, d.max(1) as u32);
             x += (rest_k / d) as i32;
