@@ -57,11 +57,14 @@ impl<G: Shape, D: DrawTarget> PaintVisitor<D::Color> for DepthVisitor<'_, '_, G,
             return Ok(());
         };
         let (flip, slack) = self.test.comparison();
+        let mut painter = painter;
+        let carried = painter.carry_depth(&depth);
         let mut sink = DepthSpans {
             target: self.target,
             buffer: self.buffer,
             painter: &painter,
             depth: TrackedPlanes::new(depth),
+            carried,
             origin: (self.window.top_left.x, self.window.top_left.y),
             flip,
             slack,
@@ -87,7 +90,10 @@ struct DepthSpans<'a, 'b, 'p, D, P> {
     /// walk, and holding the painter by value copied it in, word by word, for every triangle
     /// (and in bands for every band a triangle touches).
     painter: &'p P,
+    /// The depth plane, moved from span to span unless the painter carries it with its own
+    /// planes (`carried`), which costs one move per span instead of two.
     depth: TrackedPlanes<1>,
+    carried: bool,
     /// The window's top-left corner: the buffer's (0, 0).
     origin: (i32, i32),
     /// The target's pixel `(x, y)` is the screen's `(x, y) + offset`.
@@ -116,7 +122,12 @@ where
         let Some(stored) = self.buffer.run_mut(x, y, span.len) else {
             return Ok(());
         };
-        let start = self.depth.at(span.x, span.y)[0];
+        let carried = P::CARRIES_DEPTH && self.carried;
+        let start = if carried {
+            self.painter.carried_depth_at(span.x, span.y)
+        } else {
+            self.depth.at(span.x, span.y)[0]
+        };
         let step = self.depth.step[0];
         let (flip, slack) = (i32::from(self.flip), self.slack as i32);
 
@@ -154,6 +165,10 @@ where
             if self.write {
                 write_depths(stored, start, step);
             }
+        }
+        if carried {
+            // The painter's planes are at the span's start already.
+            return self.painter.paint_carried(span, self.offset, self.target);
         }
         self.painter.paint(span, self.offset, self.target)
     }
@@ -201,6 +216,11 @@ where
                             y: span.y,
                             len: (i - first) as u32,
                         };
+                        if P::CARRIES_DEPTH && self.carried {
+                            // The carried plane moves with the painter's own: its move to
+                            // the run's start then leaves the painter nothing to move.
+                            move_carried(self.painter, run);
+                        }
                         self.painter.paint(run, self.offset, self.target)?;
                     }
                 }
@@ -208,6 +228,14 @@ where
         }
         Ok(())
     }
+}
+
+/// Moves a painter's planes and the depth plane it carries to `run`'s start (see
+/// [`Painter::carried_depth_at`]): out of line, as `DepthSpans::paint_passing` is, so
+/// that the move's code does not grow the loop there (nor get copied with it).
+#[inline(never)]
+fn move_carried<P: Painter>(painter: &P, run: Span) {
+    painter.carried_depth_at(run.x, run.y);
 }
 
 /// Whether `depth` passes the test `(depth ^ flip) < (old ^ flip) + slack` against the stored

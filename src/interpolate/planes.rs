@@ -1453,7 +1453,7 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
                 // One multiply per product: inline, as the other moves.
                 (0..M).for_each(|k| self.add(k, self.product(k, columns, rows)));
             } else {
-                self.move_far::<M>(columns, rows);
+                self.move_far(M, columns, rows);
             }
         }
     }
@@ -1477,15 +1477,16 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     /// after their first: the move of `columns` and `rows` from the last point, as
     /// [`Planes::at_exact`] would evaluate it, by [`mul_count`] where the moves fit (in
     /// `at_exact`, inline in every span loop's set-up, that measured slower). Out of line, so
-    /// that the near moves keep their registers.
+    /// that the near moves keep their registers. The first `moved` values move: a count, not
+    /// a constant, so that every count shares one copy per number of planes.
     #[inline(never)]
-    fn move_far<const M: usize>(&self, columns: i64, rows: i64) {
+    fn move_far(&self, moved: usize, columns: i64, rows: i64) {
         match (i16::try_from(columns), i16::try_from(rows)) {
-            (Ok(columns), Ok(rows)) => (0..M).for_each(|k| {
+            (Ok(columns), Ok(rows)) => (0..moved.min(N)).for_each(|k| {
                 let sum = mul_count(self.dx[k], columns).wrapping_add(mul_count(self.dy[k], rows));
                 self.add(k, sum);
             }),
-            _ => (0..M).for_each(|k| self.add(k, self.product(k, columns, rows))),
+            _ => (0..moved.min(N)).for_each(|k| self.add(k, self.product(k, columns, rows))),
         }
     }
 
@@ -1497,6 +1498,47 @@ impl<const N: usize, const SETUP: u32> TrackedPlanes<N, SETUP> {
     pub(crate) fn first_at(&self, x: i32, y: i32) -> i64 {
         self.move_to::<1>(x, y);
         self.values[0].get()
+    }
+
+    /// The first two values at pixel `(x, y)` in 2^-SETUP units, the others left behind (see
+    /// [`TrackedPlanes::first_at`]): packed lanes with a depth plane carried beside them
+    /// ([`TrackedPlanes::adopt`]), one move for both.
+    #[inline(always)]
+    pub(crate) fn first_two_at(&self, x: i32, y: i32) -> (i64, i64) {
+        self.move_to::<2>(x, y);
+        (self.values[0].get(), self.values[1].get())
+    }
+
+    /// The first value where the planes were last moved, in 2^-SETUP units: for a span loop
+    /// whose caller has just moved them to its start ([`TrackedPlanes::first_two_at`]).
+    #[inline(always)]
+    pub(crate) fn first_here(&self) -> i64 {
+        self.values[0].get()
+    }
+
+    /// Takes `plane` as value `k`, to move with the others: for a plane whose origin is where
+    /// the planes are, with no row move kept (so as made, before any span: the values are
+    /// there and each row sum is the row gradient). Returns whether it did: nothing changes
+    /// otherwise.
+    #[inline(always)]
+    pub(crate) fn adopt(&mut self, k: usize, plane: &Planes<1, SETUP>) -> bool {
+        let origin = plane.origin();
+        let fresh = self.last.get() == (origin.x, origin.y) && self.row_move.get() == 0;
+        if !fresh || k >= N {
+            return false;
+        }
+        self.values[k].set(plane.base[0]);
+        self.dx[k] = plane.dx[0];
+        self.dy[k] = plane.dy[0];
+        self.step[k] = plane.step[0];
+        self.row_sum[k].set(plane.dy[0]);
+        true
+    }
+
+    /// A value in 2^-SETUP units as raw 16.16, as [`TrackedPlanes::at`] gives it.
+    #[inline(always)]
+    pub(crate) fn to_step_units(value: i64) -> u32 {
+        Planes::<1, SETUP>::to_step_units(&[value])[0]
     }
 
     /// All values at pixel `(x, y)` in 2^-SETUP units (bias included): [`Planes::at_exact`].

@@ -320,6 +320,30 @@ where
             ),
         }
     }
+
+    /// Rounded lanes carry a depth plane in their second plane, which [`PackedShader`]'s
+    /// loop leaves unused: a depth-tested Gouraud triangle then moves one set of planes per
+    /// span, not two, and its depth pass holds the span loop (see `depth::spans`).
+    const CARRIES_DEPTH: bool = PackedShader::<C, N>::FITS;
+
+    #[inline(always)]
+    fn carry_depth(&mut self, depth: &Planes<1>) -> bool {
+        Self::CARRIES_DEPTH && self.span_loop == SpanLoop::Lanes && self.planes.adopt(1, depth)
+    }
+
+    #[inline(always)]
+    fn carried_depth_at(&self, x: i32, y: i32) -> u32 {
+        TrackedPlanes::<N>::to_step_units(self.planes.first_two_at(x, y).1)
+    }
+
+    #[inline(always)]
+    fn paint_carried<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let shader = CarriedLanes::<C, N>(&self.planes, self.planes.dx[0] as u64, PhantomData);
+        shade_span(shader, run, offset, target)
+    }
 }
 
 impl<C, const N: usize> GouraudPainter<C, N>
@@ -687,10 +711,44 @@ where
     }
 
     #[inline(always)]
-    fn next(&self, (lanes, step): &mut Self::State) -> C {
+    fn next(&self, state: &mut Self::State) -> C {
+        Self::next_color(state)
+    }
+}
+
+impl<C, const N: usize> PackedShader<'_, C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    /// The colour of the lanes `lanes`; then the lanes one pixel right.
+    #[inline(always)]
+    fn next_color((lanes, step): &mut (u64, u64)) -> C {
         let channels = per_channel!(N, |k| Self::level(*lanes, k));
         *lanes = lanes.wrapping_add(*step);
         C::from_channels(channels)
+    }
+}
+
+/// [`PackedShader`]'s colours from lanes that carry a depth plane beside them
+/// ([`Painter::carry_depth`]), for a span whose caller has moved both planes to its start
+/// (reading the depth there): the span loop moves nothing.
+struct CarriedLanes<'a, C, const N: usize>(&'a TrackedPlanes<N>, u64, PhantomData<C>);
+
+impl<C, const N: usize> PixelShader for CarriedLanes<'_, C, N>
+where
+    C: ChannelColor<Channels = [u8; N]>,
+{
+    type Color = C;
+    type State = (u64, u64);
+
+    #[inline(always)]
+    fn start(&self, _x: i32, _y: i32) -> Self::State {
+        (self.0.first_here() as u64, self.1)
+    }
+
+    #[inline(always)]
+    fn next(&self, state: &mut Self::State) -> C {
+        PackedShader::<C, N>::next_color(state)
     }
 }
 

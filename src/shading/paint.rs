@@ -17,7 +17,7 @@ use super::spans::{shade_span, PixelShader};
 use crate::{
     coverage::{CoverageSink, FillRule, Span, SpanSink},
     geometry::Shape,
-    interpolate::AreaMemo,
+    interpolate::{AreaMemo, Planes},
     target::BlendTarget,
 };
 
@@ -46,6 +46,46 @@ pub trait Painter {
     /// The target's.
     #[inline]
     fn paint_edge<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Self::Color>,
+    {
+        self.paint(run, offset, target)
+    }
+
+    /// Whether the painter can carry a depth pass's plane with its own
+    /// ([`Painter::carry_depth`]): a constant, so that the depth pass of painters that cannot
+    /// holds no code for it.
+    const CARRIES_DEPTH: bool = false;
+
+    /// Takes `depth`, a depth pass's plane set up for the same window as the painter's own
+    /// planes, to move with them: one move per span for both. Returns whether it did (never,
+    /// by default); if so, the depth pass reads depths through [`Painter::carried_depth_at`]
+    /// and paints through [`Painter::paint_carried`] only ([`Painter::paint`] would move the
+    /// painter's planes without the depth's).
+    #[inline(always)]
+    fn carry_depth(&mut self, depth: &Planes<1>) -> bool {
+        let _ = depth;
+        false
+    }
+
+    /// The carried depth (raw 16.16) at pixel `(x, y)`, the painter's planes moved there with
+    /// it: only after [`Painter::carry_depth`] took the plane.
+    #[inline(always)]
+    fn carried_depth_at(&self, x: i32, y: i32) -> u32 {
+        let _ = (x, y);
+        0
+    }
+
+    /// [`Painter::paint`] for a painter that carries a depth pass's plane, whose planes the
+    /// pass has just moved to `run`'s first pixel ([`Painter::carried_depth_at`]): inline, so
+    /// that the pass's own span function holds the span loop (one call and one move per span
+    /// instead of two).
+    ///
+    /// # Errors
+    ///
+    /// The target's.
+    #[inline(always)]
+    fn paint_carried<D>(&self, run: Span, offset: Point, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = Self::Color>,
     {
