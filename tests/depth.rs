@@ -137,6 +137,15 @@ proptest! {
         let test = TESTS[rng.range(0, 4) as usize];
         let write = rng.range(0, 1) == 1;
         let (target, after) = draw_one(v, depths, &FlatStyle::new(Rgb565::RED), &stored, test, write);
+        // The same through a Gouraud style whose lanes carry the depth plane (`Rgb565`): the
+        // same pixels pass, each with the colour plain drawing gives it.
+        let colors = [(); 3].map(|()| {
+            Rgb565::new(rng.range(0, 31) as u8, rng.range(0, 63) as u8, rng.range(0, 31) as u8)
+        });
+        let gouraud = GouraudStyle::new(colors);
+        let (shaded, shaded_after) = draw_one(v, depths, &gouraud, &stored, test, write);
+        let mut plain = Recorder::<Rgb565>::new(window);
+        Triangle { vertices: v }.into_styled(gouraud).draw(&mut plain).unwrap();
         for p in window_points(&window) {
             let i = index(&window, p);
             let covered = reference_covers(v, p, Rule::TopLeft);
@@ -144,6 +153,11 @@ proptest! {
             prop_assert_eq!(target.writes_at(p), u32::from(passes), "{:?} {:?}", p, test);
             let want = if passes && write { interpolated[i] } else { stored[i] };
             prop_assert_eq!(after[i], want, "{:?}", p);
+            prop_assert_eq!(shaded.writes_at(p), u32::from(passes), "Gouraud {:?} {:?}", p, test);
+            if passes {
+                prop_assert_eq!(shaded.get(p), plain.get(p), "Gouraud {:?}", p);
+            }
+            prop_assert_eq!(shaded_after[i], want, "Gouraud {:?}", p);
         }
     }
 
