@@ -59,9 +59,10 @@ pub trait Painter {
 
     /// Takes `depth`, a depth pass's plane set up for the same window as the painter's own
     /// planes, to move with them: one move per span for both. Returns whether it did (never,
-    /// by default); if so, the depth pass reads depths through [`Painter::carried_depth_at`]
-    /// and paints through [`Painter::paint_carried`] only ([`Painter::paint`] would move the
-    /// painter's planes without the depth's).
+    /// by default); if so, the depth pass reads depths through [`Painter::carried_depth_at`],
+    /// which moves both, and paints a run only from where that move left the planes: through
+    /// [`Painter::paint_carried`], or [`Painter::paint`], whose own move is then none (a move
+    /// by `paint` alone would leave the depth behind).
     #[inline(always)]
     fn carry_depth(&mut self, depth: &Planes<1>) -> bool {
         let _ = depth;
