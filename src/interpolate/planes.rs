@@ -958,12 +958,19 @@ fn reciprocal_by_digits<const DIGIT: u32>(d: u32) -> u64 {
 /// product, a few multiply instructions on cores with a 32 x 32 -> 64-bit multiply.
 #[inline(always)]
 fn scale_wide(numerator: i64, reciprocal: u64, negative: bool, shift: u32) -> i64 {
-    let reciprocal = if negative {
+    let reciprocal = signed(reciprocal, negative);
+    ((i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift) as i64
+}
+
+/// `reciprocal` (below 2^62) as `i64`, negated when `negative`: the factor of
+/// [`scale_wide`] and [`scale_levels`].
+#[inline(always)]
+fn signed(reciprocal: u64, negative: bool) -> i64 {
+    if negative {
         -(reciprocal as i64)
     } else {
         reciprocal as i64
-    };
-    ((i128::from(numerator) * i128::from(reciprocal) + (1 << (shift - 1))) >> shift) as i64
+    }
 }
 
 /// [`scale_wide`], bit for bit, for small cores (Cortex-M0/M0+: see [`crate::arch::DIVIDES`]),
@@ -1163,11 +1170,7 @@ fn level_gradients<const WHOLE_BITS: u32>(
 /// multiplies. For cores with a 64-bit multiply.
 #[inline(always)]
 fn scale_levels(levels: i32, reciprocal: u64, negative: bool, shift: u32) -> i64 {
-    let reciprocal = if negative {
-        -(reciprocal as i64)
-    } else {
-        reciprocal as i64
-    };
+    let reciprocal = signed(reciprocal, negative);
     ((i128::from(levels) * i128::from(reciprocal) + (1 << (shift - 17))) >> (shift - 16)) as i64
 }
 
