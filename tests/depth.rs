@@ -79,6 +79,24 @@ fn draw_one<S: TriangleStyle<Color = Rgb565>>(
     (target, memory)
 }
 
+/// A colour of every `Rgb565` level, from `rng`.
+fn random_rgb565(rng: &mut Rng) -> Rgb565 {
+    Rgb565::new(
+        rng.range(0, 31) as u8,
+        rng.range(0, 63) as u8,
+        rng.range(0, 31) as u8,
+    )
+}
+
+/// A colour of every `Rgb888` level, from `rng`.
+fn random_rgb888(rng: &mut Rng) -> Rgb888 {
+    Rgb888::new(
+        rng.range(0, 255) as u8,
+        rng.range(0, 255) as u8,
+        rng.range(0, 255) as u8,
+    )
+}
+
 fn index(window: &Rectangle, p: Point) -> usize {
     ((p.y - window.top_left.y) * window.size.width as i32 + (p.x - window.top_left.x)) as usize
 }
@@ -139,9 +157,7 @@ proptest! {
         let (target, after) = draw_one(v, depths, &FlatStyle::new(Rgb565::RED), &stored, test, write);
         // The same through a Gouraud style whose lanes carry the depth plane (`Rgb565`): the
         // same pixels pass, each with the colour plain drawing gives it.
-        let colors = [(); 3].map(|()| {
-            Rgb565::new(rng.range(0, 31) as u8, rng.range(0, 63) as u8, rng.range(0, 31) as u8)
-        });
+        let colors = [(); 3].map(|()| random_rgb565(&mut rng));
         let gouraud = GouraudStyle::new(colors);
         let (shaded, shaded_after) = draw_one(v, depths, &gouraud, &stored, test, write);
         let mut plain = Recorder::<Rgb565>::new(window);
@@ -316,13 +332,7 @@ fn styles_draw_alike_with_and_without_depth() {
     let window = window();
     for _ in 0..200 {
         let v = random_triangle(&mut rng, &window, 15);
-        let colors = [(); 3].map(|()| {
-            Rgb565::new(
-                rng.range(0, 31) as u8,
-                rng.range(0, 63) as u8,
-                rng.range(0, 31) as u8,
-            )
-        });
+        let colors = [(); 3].map(|()| random_rgb565(&mut rng));
         let uv = [(); 3].map(|()| {
             [
                 I16F16::from_bits(rng.range(-600_000, 600_000)),
@@ -398,17 +408,7 @@ where
 
 #[test]
 fn broken_runs_keep_their_colours() {
-    broken_runs_keep_colours(
-        7,
-        |rng| {
-            Rgb888::new(
-                rng.range(0, 255) as u8,
-                rng.range(0, 255) as u8,
-                rng.range(0, 255) as u8,
-            )
-        },
-        1,
-    );
+    broken_runs_keep_colours(7, random_rgb888, 1);
 }
 
 /// `Rgb565` Gouraud triangles step packed lanes, whose levels depend on the pixel alone: runs
@@ -416,17 +416,7 @@ fn broken_runs_keep_their_colours() {
 /// carries its plane with the lanes, moved to each run's start).
 #[test]
 fn broken_runs_of_packed_lanes_keep_their_colours_exactly() {
-    broken_runs_keep_colours(
-        8,
-        |rng| {
-            Rgb565::new(
-                rng.range(0, 31) as u8,
-                rng.range(0, 63) as u8,
-                rng.range(0, 31) as u8,
-            )
-        },
-        0,
-    );
+    broken_runs_keep_colours(8, random_rgb565, 0);
 }
 
 #[test]
