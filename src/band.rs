@@ -692,7 +692,7 @@ where
         {
             return Err(BandError::Setup(Error::BandBlending));
         }
-        self.render_each::<D, N, T, G, false>(scene, background, target)
+        self.render_each::<_, _, N, T, G, false>(scene, background, to_target(target))
     }
 
     /// [`Bands::render`] for scenes that also hold translucent and anti-aliased triangles
@@ -739,19 +739,126 @@ where
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
     {
-        self.render_each::<D, N, T, G, true>(scene, background, target)
+        self.render_each::<_, _, N, T, G, true>(scene, background, to_target(target))
+    }
+
+    /// Renders `scene` as [`Bands::render`] does, but hands each finished band to `flush` as
+    /// its screen area and its pixels as stored, row-major (`S`: raw `u16` in the display's
+    /// byte order, say), instead of drawing it into a target: the way to stream bands to a
+    /// display by DMA or a raw bus write, without a colour conversion per pixel. The buffer is
+    /// reused for the next band once `flush` returns (with one band buffer, a DMA transfer
+    /// must end before `flush` does).
+    ///
+    /// # Errors
+    ///
+    /// As [`Bands::render`]; [`BandError::Target`] with `flush`'s first error, after which no
+    /// band is rendered.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Bands, Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let screen = Rectangle::new(Point::zero(), Size::new(8, 8));
+    /// let mut scene: Scene<Rgb565, 1> = Scene::new(screen);
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+    /// scene.push(t, SceneStyle::Flat(FlatStyle::new(Rgb565::RED)))?;
+    ///
+    /// // Pixels stored as the display takes them: big-endian Rgb565 words.
+    /// let mut band = [0u16; 8 * 4];
+    /// let mut bands: Bands<Rgb565, u16> = Bands::new(&mut band, 8, 4)?;
+    /// let mut wire = Vec::new();
+    /// bands
+    ///     .render_with(&scene, Rgb565::BLACK, |area, pixels| {
+    ///         // A display driver would set its window to `area` and send the bytes.
+    ///         assert_eq!(area.size, Size::new(8, 4));
+    ///         wire.extend(pixels.iter().flat_map(|p| p.to_be_bytes()));
+    ///         Ok::<(), ()>(())
+    ///     })
+    ///     .unwrap();
+    /// assert_eq!(wire.len(), 8 * 8 * 2);
+    /// assert_eq!(&wire[..2], &[0xF8, 0x00]); // (0, 0) is red
+    /// assert_eq!(&wire[wire.len() - 2..], &[0x00, 0x00]); // (7, 7) is black
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn render_with<E, const N: usize, T, G>(
+        &mut self,
+        scene: &Scene<'_, C, N, T, G>,
+        background: C,
+        flush: impl FnMut(&Rectangle, &[S]) -> Result<(), E>,
+    ) -> Result<(), BandError<E>>
+    where
+        T: TexelSource<Color = C> + Copy,
+        G: Shape,
+        C: ChannelColor,
+        TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
+        GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
+    {
+        if scene
+            .triangles
+            .iter()
+            .any(|t| t.anti_aliased || t.opacity < u8::MAX)
+        {
+            return Err(BandError::Setup(Error::BandBlending));
+        }
+        self.render_each::<_, _, N, T, G, false>(scene, background, flush)
+    }
+
+    /// [`Bands::render_with`] for scenes that also hold translucent and anti-aliased
+    /// triangles, blended as [`Bands::render_blended`] blends them.
+    ///
+    /// # Errors
+    ///
+    /// As [`Bands::render_with`], but for [`Error::BandBlending`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::{Gray8, GrayColor}, prelude::*, primitives::Rectangle};
+    /// use trirast::{band::{Bands, Scene, SceneStyle}, FlatStyle, Triangle};
+    ///
+    /// let mut scene: Scene<Gray8, 1> = Scene::new(Rectangle::new(Point::zero(), Size::new(8, 8)));
+    /// let t = Triangle::new(Point::new(0, 0), Point::new(8, 0), Point::new(0, 8));
+    /// scene.push_translucent(t, SceneStyle::Flat(FlatStyle::new(Gray8::WHITE)), 64)?;
+    /// let mut band = [0u8; 8 * 4];
+    /// let mut bands: Bands<Gray8, u8> = Bands::new(&mut band, 8, 4)?;
+    /// let mut first = None;
+    /// bands
+    ///     .render_blended_with(&scene, Gray8::BLACK, |_, pixels| {
+    ///         first.get_or_insert(pixels[0]);
+    ///         Ok::<(), ()>(())
+    ///     })
+    ///     .unwrap();
+    /// assert_eq!(first, Some(64));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    pub fn render_blended_with<E, const N: usize, T, G>(
+        &mut self,
+        scene: &Scene<'_, C, N, T, G>,
+        background: C,
+        flush: impl FnMut(&Rectangle, &[S]) -> Result<(), E>,
+    ) -> Result<(), BandError<E>>
+    where
+        T: TexelSource<Color = C> + Copy,
+        G: Shape,
+        C: ChannelColor,
+        TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
+        GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
+    {
+        self.render_each::<_, _, N, T, G, true>(scene, background, flush)
     }
 
     /// Renders every band; `BLEND` builds in the drawing of translucent and anti-aliased
     /// triangles.
-    fn render_each<D, const N: usize, T, G, const BLEND: bool>(
+    fn render_each<E, F, const N: usize, T, G, const BLEND: bool>(
         &mut self,
         scene: &Scene<'_, C, N, T, G>,
         background: C,
-        target: &mut D,
-    ) -> Result<(), BandError<D::Error>>
+        mut flush: F,
+    ) -> Result<(), BandError<E>>
     where
-        D: DrawTarget<Color = C>,
+        F: FnMut(&Rectangle, &[S]) -> Result<(), E>,
         T: TexelSource<Color = C> + Copy,
         G: Shape,
         C: ChannelColor,
@@ -783,10 +890,7 @@ where
                 Size::new(self.width, rows),
             );
             self.render_band::<N, T, G, BLEND>(scene, background, &area, len);
-            let pixels = &self.pixels[..len];
-            target
-                .fill_contiguous(&area, pixels.iter().map(|&p| p.load()))
-                .map_err(BandError::Target)?;
+            flush(&area, &self.pixels[..len]).map_err(BandError::Target)?;
             top += i64::from(rows);
         }
         Ok(())
@@ -853,6 +957,16 @@ where
             let Ok(()) = drawn;
         }
     }
+}
+
+/// The flush of [`Bands::render`]: each band into `target` as one `fill_contiguous` call.
+fn to_target<C, S, D>(target: &mut D) -> impl FnMut(&Rectangle, &[S]) -> Result<(), D::Error> + '_
+where
+    C: PixelColor,
+    S: StoredPixel<C>,
+    D: DrawTarget<Color = C>,
+{
+    move |area, pixels| target.fill_contiguous(area, pixels.iter().map(|&p| p.load()))
 }
 
 /// Where a band's triangles go: the screen their interpolation is set up for, the band's

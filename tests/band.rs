@@ -273,6 +273,52 @@ fn render_into<K: SetupCache, G: SceneShape>(
     pixels
 }
 
+/// The scene rendered in bands of `rows` rows handed over raw (`Bands::render_with`, or
+/// `render_blended_with`), each copied into the frame where its area says: the areas must
+/// follow one another down the screen, as wide as it.
+fn flushed<G: SceneShape>(
+    scene: &TestScene<'_, G>,
+    rows: u32,
+    background: Rgb565,
+    far: u16,
+) -> Vec<Rgb565> {
+    let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
+    let mut depth_band = vec![0u16; (W * rows) as usize];
+    let mut bands = Bands::new(&mut band, W, rows)
+        .unwrap()
+        .with_depth(&mut depth_band)
+        .unwrap()
+        .with_far_depth(far);
+    let screen = scene.screen();
+    let mut pixels = Vec::new();
+    let mut flush = |area: &Rectangle, band: &[Rgb565]| {
+        let next = screen.top_left + Point::new(0, (pixels.len() as u32 / W) as i32);
+        assert_eq!(area.top_left, next);
+        assert!(area.size.width == W && area.size.height <= rows);
+        assert_eq!(
+            band.len(),
+            area.size.width as usize * area.size.height as usize
+        );
+        pixels.extend_from_slice(band);
+        Ok::<(), ()>(())
+    };
+    let blends = scene
+        .triangles()
+        .iter()
+        .any(|t| t.anti_aliased || t.opacity < u8::MAX);
+    if blends {
+        let refused = bands.render_with(scene, background, &mut flush);
+        assert_eq!(refused, Err(BandError::Setup(Error::BandBlending)));
+        bands
+            .render_blended_with(scene, background, &mut flush)
+            .unwrap();
+    } else {
+        bands.render_with(scene, background, &mut flush).unwrap();
+    }
+    assert_eq!(pixels.len(), (W * H) as usize);
+    pixels
+}
+
 /// Renders a random scene of `G` triangles in bands of several heights, with and without kept
 /// set-ups, and checks each image against the full frame.
 fn bands_match_the_full_frame<G: SceneShape>(seed: u64) -> Result<(), TestCaseError> {
@@ -295,6 +341,10 @@ fn bands_match_the_full_frame<G: SceneShape>(seed: u64) -> Result<(), TestCaseEr
         let got = banded(&scene, rows, background, far, None);
         prop_assert!(got == want, "band height {} differs", rows);
     }
+    prop_assert!(
+        flushed(&scene, 7, background, far) == want,
+        "flushed bands differ"
+    );
     // Kept set-ups: a slot for every triangle, for some, for none; the slots used for
     // another scene first, whose set-ups must not be taken for this one's, then for a
     // scene of no triangles (each frame forgets only the slots its own scene reads).
@@ -354,6 +404,30 @@ fn one_call_per_band() {
         0
     );
     assert!(target.0.hits.iter().all(|&n| n == 1));
+}
+
+/// A flush's error ends the render: no band after it is rendered or handed over.
+#[test]
+fn a_flush_error_stops_the_render() {
+    let mut scene: Scene<BinaryColor, 1> =
+        Scene::new(Rectangle::new(Point::new(0, 0), Size::new(6, 20)));
+    let t = Triangle::new(Point::new(0, 0), Point::new(6, 0), Point::new(0, 20));
+    scene
+        .push(t, SceneStyle::Flat(FlatStyle::new(BinaryColor::On)))
+        .unwrap();
+    let mut band = [BinaryColor::Off; 6 * 4];
+    let mut bands = Bands::new(&mut band, 6, 4).unwrap();
+    let mut tops = Vec::new();
+    let result = bands.render_with(&scene, BinaryColor::Off, |area, _| {
+        tops.push(area.top_left.y);
+        if tops.len() == 2 {
+            Err("bus fault")
+        } else {
+            Ok(())
+        }
+    });
+    assert_eq!(result, Err(BandError::Target("bus fault")));
+    assert_eq!(tops, [0, 4]);
 }
 
 #[test]
