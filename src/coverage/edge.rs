@@ -133,6 +133,26 @@ impl<T: Lane> EdgeStepper<T> {
         }
     }
 
+    /// The stepper whose bound on the current row is `x`, with error term `error` (in
+    /// `-dy..0`) and increments `step` and `remainder` (`dx = step dy + remainder`,
+    /// `remainder` in `0..dy`): for edges started otherwise (sub-pixel vertices).
+    #[inline(always)]
+    pub(crate) fn from_parts(x: T, error: T, (step, remainder): (T, T), dy: T) -> Self {
+        Self {
+            x,
+            error,
+            step,
+            remainder,
+            dy,
+        }
+    }
+
+    /// The error term, in `-dy..0`.
+    #[cfg(test)]
+    pub(crate) fn error(&self) -> T {
+        self.error
+    }
+
     /// The bound on the current row.
     #[inline(always)]
     pub(crate) fn x(&self) -> T {
