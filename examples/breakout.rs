@@ -22,7 +22,7 @@ mod demo_window;
 
 use std::path::Path;
 
-use breakout::{Game, State, HEIGHT, WIDTH};
+use breakout::{Game, HEIGHT, State, WIDTH};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use trirast::Framebuffer;
@@ -103,7 +103,7 @@ fn run_headless(script: &str) {
 mod window {
     use super::{demo_window, *};
     use breakout::Input;
-    use embedded_graphics_simulator::{sdl2::Keycode, SimulatorEvent, Window};
+    use embedded_graphics_simulator::{SimulatorEvent, Window, sdl2::Keycode};
 
     pub fn run() {
         let mut pixels = vec![Rgb565::BLACK; (WIDTH * HEIGHT) as usize];

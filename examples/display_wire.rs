@@ -27,8 +27,8 @@ use embedded_graphics::{
     prelude::*,
 };
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
-use trirast::{band::Bands, Framebuffer};
-use wire::{Controller, Gddram, CASET, SIDE};
+use trirast::{Framebuffer, band::Bands};
+use wire::{CASET, Controller, Gddram, SIDE};
 
 /// Bytes of the driver's pixel buffer (`SpiInterface`): one SPI write per 512 bytes of pixels.
 const DRIVER_BUFFER: usize = 512;
@@ -46,7 +46,9 @@ fn main() {
         scene.len(),
         SPI_HZ as f64 / 1e6
     );
-    println!("| Way | pixel memory (bytes) | bytes on the wire | SPI transactions | windows | bits on the wire at 62.5 MHz |");
+    println!(
+        "| Way | pixel memory (bytes) | bytes on the wire | SPI transactions | windows | bits on the wire at 62.5 MHz |"
+    );
     println!("| --- | --- | --- | --- | --- | --- |");
     let ways: [(&str, u64); 3] = [
         ("direct", 0),

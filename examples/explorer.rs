@@ -16,14 +16,14 @@
 mod demo_window;
 
 use embedded_graphics::{
-    mono_font::{ascii::FONT_6X10, MonoTextStyle},
+    mono_font::{MonoTextStyle, ascii::FONT_6X10},
     pixelcolor::{Rgb565, Rgb888},
     prelude::*,
     primitives::{Line, PrimitiveStyle, Rectangle},
     text::Text,
 };
 use embedded_graphics_simulator::{
-    sdl2::Keycode, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent, Window,
+    OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent, Window, sdl2::Keycode,
 };
 use fixed::types::I16F16;
 use trirast::{FillRule, Framebuffer, GouraudStyle, Triangle};

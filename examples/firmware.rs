@@ -34,11 +34,11 @@ use cortex_m_semihosting::{debug, hprintln};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
 use heapless::Vec;
 use modes::{
-    DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, SETUP_SLOTS, TEXTURE_SIDE,
+    BAND_LEN, DisplayList, FRAME_LEN, MAX_TRIANGLES, Mode, SETUP_SLOTS, TEXTURE_SIDE, Workspace,
 };
 use panic_halt as _;
-use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
-use trirast::{band::SetupSlot, texture::Texels, Framebuffer};
+use scenes::{HEIGHT, Scene, SceneTriangle, WIDTH};
+use trirast::{Framebuffer, band::SetupSlot, texture::Texels};
 
 /// A buffer made over sizes this program chose, which always match: a mismatch stops it
 /// without `unwrap`, whose message would link the error's `Debug` formatting (about 1 KB of

@@ -25,9 +25,9 @@ use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use fixed::types::I16F16;
 use panic_halt as _;
 use trirast::{
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Perspective, Texels, Wrap},
-    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
 const WIDTH: u32 = 320;

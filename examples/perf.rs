@@ -42,13 +42,13 @@ use embedded_graphics::{
 };
 use fixed::types::I16F16;
 use modes::DisplayList;
-use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use scenes::{HEIGHT, Scene, SceneTriangle, WIDTH};
 use trirast::{
+    FillRule, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     band::{Bands, SceneStyle, SetupCache, SetupSlot},
-    coverage::{for_each_span, Span},
+    coverage::{Span, for_each_span},
     depth::{DepthBuffer, DepthTarget},
     texture::{Filter, Perspective, Texels, Wrap},
-    FillRule, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
 const MODES: &[&str] = &[

@@ -17,7 +17,7 @@ mod ssd0323;
 use std::{path::PathBuf, time::Instant};
 
 use embedded_graphics::{
-    mono_font::{ascii::FONT_6X10, MonoTextStyle},
+    mono_font::{MonoTextStyle, ascii::FONT_6X10},
     pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb565, Rgb888},
     prelude::*,
     primitives::{PrimitiveStyle, Rectangle, Triangle as EgTriangle},
@@ -27,13 +27,13 @@ use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, Simulat
 use fixed::types::{I16F16, I24F8};
 use tinybmp::Bmp;
 use trirast::{
+    FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
     band::{Bands, Scene as BandScene, SceneStyle},
     geometry::{SubPixelTriangle, SubPoint, Viewport},
     mesh::MeshVertex,
     shading::Fragment,
     target::BlendTarget,
     texture::{Filter, ImageTexels, Perspective, Texels, Wrap},
-    FillRule, FlatStyle, Framebuffer, GouraudStyle, ShaderStyle, TextureStyle, Triangle,
 };
 
 /// Six frames of a needle turning one degree a frame: vertices snapped to whole pixels
@@ -592,11 +592,7 @@ fn gouraud_gray() -> (SimulatorDisplay<Rgb888>, OutputSettings) {
             4 => blit(&mut display, x0, &|q| g4.get_pixel(q).luma() * 17),
             2 => blit(&mut display, x0, &|q| g2.get_pixel(q).luma() * 85),
             _ => blit(&mut display, x0, &|q| {
-                if bin.get_pixel(q).is_on() {
-                    255
-                } else {
-                    0
-                }
+                if bin.get_pixel(q).is_on() { 255 } else { 0 }
             }),
         }
     }

@@ -31,7 +31,7 @@ mod firmware {
     use panic_halt as _;
     use trirast::band::Bands;
 
-    use super::ssd0323::{self, Mode, Ssd0323, Wire, RAM_ROWS, WIDTH};
+    use super::ssd0323::{self, Mode, RAM_ROWS, Ssd0323, WIDTH, Wire};
     /// Rows per band: 2 KB of pixels and 4 KB of depths.
     const BAND_ROWS: u32 = 16;
 
@@ -83,7 +83,7 @@ mod firmware {
         fn new() -> Self {
             set_bits(RCGC1, 1 << 4); // SSI0
             set_bits(RCGC2, 0b1101); // GPIO A, C, D
-                                     // A2 clock, A3 frame select, A5 transmit: the SSI's own pins.
+            // A2 clock, A3 frame select, A5 transmit: the SSI's own pins.
             set_bits(GPIO_A + GPIO_AFSEL, 0b10_1100);
             set_bits(GPIO_A + GPIO_DEN, 0b10_1100);
             // C7 (D/C) and D0 (chip select, high) are outputs.
@@ -246,7 +246,9 @@ mod host {
         let host = ssd0323::render();
         save_png(&host, &dir.join("host.png"));
         let Some(dump) = std::env::args().nth(1) else {
-            println!("host render: target/ssd0323/host.png (run examples/ssd0323.sh to compare it with QEMU's display)");
+            println!(
+                "host render: target/ssd0323/host.png (run examples/ssd0323.sh to compare it with QEMU's display)"
+            );
             return;
         };
         let shown = read_screendump(Path::new(&dump)).unwrap_or_else(|e| {

@@ -59,15 +59,15 @@ use embedded_graphics::{
 };
 
 use crate::{
+    Error,
     depth::{DepthBuffer, DepthTarget, DepthTest},
     geometry::{Shape, Triangle},
     shading::{
-        paint::{draw_anti_aliased_in, draw_plain_in},
         ChannelColor, FlatStyle, GouraudStyle, TextureStyle,
+        paint::{draw_anti_aliased_in, draw_plain_in},
     },
-    target::{fill_run, Framebuffer, StoredPixel},
+    target::{Framebuffer, StoredPixel, fill_run},
     texture::{TexelSource, Texels},
-    Error,
 };
 
 /// How a scene triangle is filled: the crate's styles, with textures of type `T`

@@ -5,10 +5,10 @@ use embedded_graphics::{draw_target::DrawTarget, geometry::Point};
 use fixed::types::{I16F16, I24F8};
 
 use crate::{
+    Error,
     depth::DepthTarget,
     geometry::{Orientation, Projected, Shape, SubPixelTriangle, SubPoint, Triangle},
     shading::TriangleStyle,
-    Error,
 };
 
 /// A mesh vertex: where it lands on screen and, for depth-tested drawing, its depth.

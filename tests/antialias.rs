@@ -4,10 +4,10 @@
 
 mod common;
 
-use common::{exact_plane, reference_covers, Rule};
+use common::{Rule, exact_plane, reference_covers};
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
-use trirast::{coverage::for_each_coverage_run, Triangle};
+use trirast::{Triangle, coverage::for_each_coverage_run};
 
 /// How far a coverage may be from the exact area: 1/256 (the documented bound; the worst
 /// case of the arithmetic is 1/341, and 30,000 random triangles stay within 1/1024), plus
@@ -81,11 +81,7 @@ fn exact_coverage_in(v: [(i64, i64); 3], scale: i64, p: Point) -> f64 {
         let coordinate = |pt: &(Q, Q)| if on_x { pt.0 } else { pt.1 };
         let keeps = |pt: &(Q, Q)| {
             let c = coordinate(pt);
-            if sign > 0 {
-                c.ge(bound)
-            } else {
-                bound.ge(c)
-            }
+            if sign > 0 { c.ge(bound) } else { bound.ge(c) }
         };
         let mut next = Vec::new();
         for i in 0..polygon.len() {
@@ -437,9 +433,9 @@ fn anti_aliased_textures_match_plain_drawing_inside() {
     use embedded_graphics::pixelcolor::Gray8;
     use fixed::types::I16F16;
     use trirast::{
+        TextureStyle,
         target::BlendTarget,
         texture::{Filter, Texels, Wrap},
-        TextureStyle,
     };
     let texels: Vec<Gray8> = (0..16).map(|i| Gray8::new(i * 16 + 7)).collect();
     let texture = Texels::new(&texels, 4, 4).unwrap();
@@ -477,8 +473,8 @@ fn opacities_combine_on_every_blend_target() {
         pixelcolor::{Gray8, GrayColor},
     };
     use trirast::{
-        target::{blend, BlendTarget, OverBackground},
         FlatStyle,
+        target::{BlendTarget, OverBackground, blend},
     };
     let v = [Point::new(3, 2), Point::new(40, 9), Point::new(12, 50)];
     let t = Triangle::new(v[0], v[1], v[2]);

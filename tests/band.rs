@@ -14,12 +14,12 @@ use embedded_graphics::{
 use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
+    Error, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     band::{BandError, Bands, Scene, SceneStyle, SetupCache, SetupSlot},
     depth::{DepthBuffer, DepthTarget, DepthTest},
     geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, Texels, Wrap},
-    Error, FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
 const W: u32 = 48;

@@ -4,12 +4,12 @@
 
 mod common;
 
-use common::{exact_plane, reference_covers, round_half_up, window_points, Recorder, Rule};
+use common::{Recorder, Rule, exact_plane, reference_covers, round_half_up, window_points};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use fixed::types::{I16F16, I32F32};
 use proptest::prelude::*;
 use trirast::{
-    interpolate::Location, shading::Fragment, FillRule, FlatStyle, ShaderStyle, Triangle,
+    FillRule, FlatStyle, ShaderStyle, Triangle, interpolate::Location, shading::Fragment,
 };
 
 fn pt(range: std::ops::Range<i32>) -> impl Strategy<Value = Point> {

@@ -5,13 +5,13 @@
 mod common;
 
 use common::{
-    reference_covers, reference_pixels, window_contains, window_points, CountingTarget, Offset,
-    Rule,
+    CountingTarget, Offset, Rule, reference_covers, reference_pixels, window_contains,
+    window_points,
 };
 use embedded_graphics::primitives::PointsIter;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
-use trirast::{coverage::for_each_span, coverage::Span, FlatStyle, Triangle, FAST_LIMIT};
+use trirast::{FAST_LIMIT, FlatStyle, Triangle, coverage::Span, coverage::for_each_span};
 
 /// A target window: anywhere near the origin, or far out, up to 40x40.
 fn window() -> impl Strategy<Value = Rectangle> {
@@ -365,9 +365,9 @@ fn fixed_cases_match_reference() {
 fn the_first_error_stops_every_walk() {
     use fixed::types::I24F8;
     use trirast::{
+        FillRule,
         coverage::for_each_subpixel_span,
         geometry::{SubPixelTriangle, SubPoint},
-        FillRule,
     };
     let window = Rectangle::new(Point::zero(), Size::new(64, 64));
     let far = FAST_LIMIT + 1000;
@@ -386,11 +386,7 @@ fn the_first_error_stops_every_walk() {
         let mut seen = 0;
         let result = walk(&mut |_| {
             seen += 1;
-            if seen == 3 {
-                Err(seen)
-            } else {
-                Ok(())
-            }
+            if seen == 3 { Err(seen) } else { Ok(()) }
         });
         (result, seen)
     };

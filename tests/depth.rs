@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{exact_plane, reference_covers, window_points, Recorder, Rng, Rule};
+use common::{Recorder, Rng, Rule, exact_plane, reference_covers, window_points};
 use embedded_graphics::{
     pixelcolor::{Rgb565, Rgb888, RgbColor},
     prelude::*,
@@ -14,12 +14,12 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 use proptest::prelude::*;
 use trirast::{
+    Error, FlatStyle, GouraudStyle, Orientation, ShaderStyle, TextureStyle, Triangle,
     depth::{DepthBuffer, DepthTarget, DepthTest},
     geometry::Viewport,
     mesh::{Cull, Mesh},
     shading::{Fragment, TriangleStyle},
     texture::{Filter, Texels},
-    Error, FlatStyle, GouraudStyle, Orientation, ShaderStyle, TextureStyle, Triangle,
 };
 
 const TESTS: [DepthTest; 5] = [

@@ -15,13 +15,13 @@ use embedded_graphics::{
 };
 use mipidsi::interface::SpiError;
 use trirast::{
+    FillRule, Framebuffer,
     band::{BandError, Bands},
     coverage::for_each_span,
-    FillRule, Framebuffer,
 };
 use wire::{
-    band_scene, panel, scene200, screen, BusFailed, Controller, Gddram, Panel, Wire, CASET, RAMWR,
-    RASET, SIDE,
+    BusFailed, CASET, Controller, Gddram, Panel, RAMWR, RASET, SIDE, Wire, band_scene, panel,
+    scene200, screen,
 };
 
 /// The reference: the scene drawn into a framebuffer.

@@ -9,10 +9,10 @@ mod scenes;
 
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use modes::{
-    DisplayList, Mode, Workspace, BAND_LEN, FRAME_LEN, MAX_TRIANGLES, SETUP_SLOTS, TEXTURE_SIDE,
+    BAND_LEN, DisplayList, FRAME_LEN, MAX_TRIANGLES, Mode, SETUP_SLOTS, TEXTURE_SIDE, Workspace,
 };
-use scenes::{Scene, HEIGHT, WIDTH};
-use trirast::{band::SetupSlot, texture::Texels, Framebuffer};
+use scenes::{HEIGHT, Scene, WIDTH};
+use trirast::{Framebuffer, band::SetupSlot, texture::Texels};
 
 #[test]
 fn frames_match_the_firmware_checksums() {

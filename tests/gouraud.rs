@@ -6,8 +6,8 @@
 mod common;
 
 use common::{
-    exact_plane, reference_covers, reference_pixels, round_half_up, window_points, CountingTarget,
-    Offset, Recorder, Rng, Rule,
+    CountingTarget, Offset, Recorder, Rng, Rule, exact_plane, reference_covers, reference_pixels,
+    round_half_up, window_points,
 };
 use embedded_graphics::{
     pixelcolor::{
@@ -18,7 +18,7 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 use proptest::prelude::*;
-use trirast::{shading::ChannelColor, FillRule, FlatStyle, GouraudStyle, Triangle};
+use trirast::{FillRule, FlatStyle, GouraudStyle, Triangle, shading::ChannelColor};
 
 /// Exact channel value at `p`, rounded half up.
 fn exact_channel(v: [Point; 3], channel: [u8; 3], p: Point) -> i128 {

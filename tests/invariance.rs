@@ -5,7 +5,7 @@ mod common;
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
-use trirast::{coverage::for_each_span, coverage::Span, FillRule, Triangle, FAST_LIMIT};
+use trirast::{FAST_LIMIT, FillRule, Triangle, coverage::Span, coverage::for_each_span};
 
 fn spans(v: [Point; 3], rule: FillRule, window: &Rectangle) -> Vec<Span> {
     let mut out = Vec::new();

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::{reference_covers, window_points, Recorder, Rng, Rule};
+use common::{Recorder, Rng, Rule, reference_covers, window_points};
 use embedded_graphics::{
     pixelcolor::{Gray8, Rgb565, Rgb888, RgbColor},
     prelude::*,
@@ -17,13 +17,13 @@ use embedded_graphics::{
 use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
+    Framebuffer, ShaderStyle, TextureStyle, Triangle,
     band::{Bands, Scene, SceneStyle},
     depth::{DepthBuffer, DepthTarget},
     geometry::{SubPixelTriangle, SubPoint},
     shading::Fragment,
     target::BlendTarget,
     texture::{Filter, Perspective, SubSpan, Texels, Wrap},
-    Framebuffer, ShaderStyle, TextureStyle, Triangle,
 };
 
 /// Texture side, in texels: each texel a colour of its own.

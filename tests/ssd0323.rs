@@ -14,7 +14,7 @@ use embedded_graphics::{
     prelude::*,
     primitives::Rectangle,
 };
-use ssd0323::{Mode, OledError, Ssd0323, Wire, HEIGHT, RAM_ROWS, WIDTH};
+use ssd0323::{HEIGHT, Mode, OledError, RAM_ROWS, Ssd0323, WIDTH, Wire};
 use trirast::band::{BandError, Bands};
 
 /// What went over the wire, in order; fails once `budget` bytes have been sent, if set.
@@ -166,9 +166,11 @@ fn areas_it_cannot_write_are_refused_before_anything_is_sent() {
     let ram = Rectangle::new(Point::zero(), Size::new(WIDTH, RAM_ROWS));
     oled.fill_solid(&ram, Gray4::new(9)).unwrap();
     assert_eq!(oled.windows, 1);
-    assert!(decode(&oled.release().sent)
-        .iter()
-        .all(|&c| c == Gray4::new(9)));
+    assert!(
+        decode(&oled.release().sent)
+            .iter()
+            .all(|&c| c == Gray4::new(9))
+    );
 }
 
 #[test]

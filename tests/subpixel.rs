@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{exact_plane, jittered_grid, reference_covers, window_points, Recorder, Rng, Rule};
+use common::{Recorder, Rng, Rule, exact_plane, jittered_grid, reference_covers, window_points};
 use embedded_graphics::{
     pixelcolor::{Gray8, GrayColor, Rgb565},
     prelude::*,
@@ -14,12 +14,12 @@ use embedded_graphics::{
 use fixed::types::{I16F16, I24F8};
 use proptest::prelude::*;
 use trirast::{
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     coverage::{for_each_span, for_each_subpixel_span},
     depth::{DepthBuffer, DepthTarget, DepthTest},
     geometry::{SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, Texels, Wrap},
-    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
 /// Vertex coordinates in 1/256 pixel, the type's whole range.

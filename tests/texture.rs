@@ -6,12 +6,12 @@
 
 mod common;
 
-use common::{exact_plane, reference_covers, window_points, Recorder, Rng, Rule};
+use common::{Recorder, Rng, Rule, exact_plane, reference_covers, window_points};
 use embedded_graphics::{
     image::ImageRaw,
     pixelcolor::{
-        raw::{BigEndian, LittleEndian},
         BinaryColor, Gray4, Gray8, IntoStorage, Rgb565, Rgb888, RgbColor,
+        raw::{BigEndian, LittleEndian},
     },
     prelude::*,
     primitives::Rectangle,
@@ -19,9 +19,9 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 use proptest::prelude::*;
 use trirast::{
+    FillRule, Framebuffer, TextureStyle, Triangle,
     shading::ChannelColor,
     texture::{Filter, ImageTexels, RawTexels, Texels, Wrap},
-    FillRule, Framebuffer, TextureStyle, Triangle,
 };
 
 /// Exact texture coordinates at `p`: `(u, v, d)` with the coordinates `u / d`, `v / d` texels.

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{jittered_grid, reference_covers, Recorder, Rng, Rule};
+use common::{Recorder, Rng, Rule, jittered_grid, reference_covers};
 use embedded_graphics::{
     pixelcolor::{Gray8, Rgb565},
     prelude::*,
@@ -12,10 +12,10 @@ use embedded_graphics::{
 };
 use proptest::prelude::*;
 use trirast::{
+    FlatStyle, Framebuffer, GouraudStyle, Triangle,
     depth::{DepthBuffer, DepthTarget},
     shading::ChannelColor,
     target::OverBackground,
-    FlatStyle, Framebuffer, GouraudStyle, Triangle,
 };
 
 const W: u32 = 40;

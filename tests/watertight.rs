@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{jittered_grid, reference_covers, window_points, CountingTarget, Offset, Rng, Rule};
+use common::{CountingTarget, Offset, Rng, Rule, jittered_grid, reference_covers, window_points};
 use embedded_graphics::{
     mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle,
 };

@@ -7,7 +7,7 @@
 #![allow(dead_code)] // Each includer uses a different part.
 
 use embedded_graphics::{
-    mono_font::{ascii::FONT_6X10, MonoTextStyle},
+    mono_font::{MonoTextStyle, ascii::FONT_6X10},
     pixelcolor::Rgb565,
     prelude::*,
     text::{Alignment, Text},
@@ -204,7 +204,7 @@ impl Game {
                 return Input {
                     launch: true,
                     ..Input::default()
-                }
+                };
             }
             State::Won | State::Lost => return Input::default(),
             State::Playing => {}

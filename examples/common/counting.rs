@@ -2,7 +2,7 @@
 //! often each pixel is written (for pixel counts, overdraw and gaps).
 #![allow(dead_code)]
 
-use embedded_graphics::{prelude::*, primitives::Rectangle, Pixel};
+use embedded_graphics::{Pixel, prelude::*, primitives::Rectangle};
 
 pub struct Counting<'a, D> {
     pub inner: &'a mut D,

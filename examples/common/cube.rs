@@ -13,11 +13,11 @@ use embedded_graphics::{
 };
 use fixed::types::I16F16;
 use trirast::{
+    Framebuffer, TextureStyle,
     depth::{DepthBuffer, DepthTarget},
     geometry::{SubPoint, Viewport},
     mesh::{Cull, Mesh, MeshVertex},
     texture::{Filter, Perspective, Texels},
-    Framebuffer, TextureStyle,
 };
 
 /// The colour behind the cube.

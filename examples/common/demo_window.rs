@@ -1,6 +1,6 @@
 //! What the SDL window demos share (feature `sdl`).
 
-use embedded_graphics_simulator::{sdl2::Keycode, SimulatorEvent};
+use embedded_graphics_simulator::{SimulatorEvent, sdl2::Keycode};
 
 /// Closing the window or pressing Escape.
 pub fn is_quit(event: &SimulatorEvent) -> bool {

@@ -6,15 +6,15 @@
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::StyledDrawable};
 use fixed::types::{I16F16, I24F8};
 use trirast::{
+    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     band::{Bands, Scene as BandScene, SceneStyle, SetupCache, SetupSlot},
     depth::{DepthBuffer, DepthTarget},
     geometry::{Shape, SubPixelTriangle, SubPoint},
     target::BlendTarget,
     texture::{Filter, NoTexture, Perspective, Texels},
-    FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
 };
 
-use crate::scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use crate::scenes::{HEIGHT, Scene, SceneTriangle, WIDTH};
 
 /// Side of the benchmark texture.
 pub const TEXTURE_SIDE: u32 = 64;

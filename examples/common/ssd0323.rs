@@ -16,9 +16,9 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 use trirast::{
+    GouraudStyle, Triangle,
     band::{Scene, SceneStyle},
     mesh::{Cull, MeshVertex},
-    GouraudStyle, Triangle,
 };
 
 // The includer declares `cube` (examples/common/cube.rs) beside this module.
@@ -252,8 +252,8 @@ pub fn scene(frame: u32, frames: u32) -> Scene<'static, Gray4, CAPACITY> {
 #[cfg(not(target_os = "none"))]
 pub fn render() -> Vec<Gray4> {
     use trirast::{
-        depth::{DepthBuffer, DepthTarget},
         Framebuffer,
+        depth::{DepthBuffer, DepthTarget},
     };
 
     let scene = scene(FRAME, FRAMES);

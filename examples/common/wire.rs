@@ -9,7 +9,7 @@
 use std::{cell::RefCell, convert::Infallible, rc::Rc};
 
 use embedded_graphics::{
-    pixelcolor::{raw::RawU16, BinaryColor, Rgb565},
+    pixelcolor::{BinaryColor, Rgb565, raw::RawU16},
     prelude::{Point, Size},
     primitives::Rectangle,
 };

@@ -31,9 +31,9 @@ use embedded_graphics::primitives::Rectangle;
 use super::Span;
 use crate::geometry::Triangle;
 use crate::setup::{
+    Lane,
     lane::{floor_div_rem_i128, mul_u32},
     reciprocal::divide_by_inverse,
-    Lane,
 };
 
 /// Fraction bits of positions.

@@ -7,8 +7,8 @@
 //! `dx / dy`, computed once.
 
 use crate::setup::{
-    lane::{div_rem_floor_compact, div_rem_u64},
     Lane,
+    lane::{div_rem_floor_compact, div_rem_u64},
 };
 
 /// How an edge's exact crossing `X` on a row becomes a pixel bound.

@@ -17,7 +17,7 @@ use embedded_graphics::{
 
 pub use fill_rule::FillRule;
 
-pub(crate) use area::{walk_coverage, walk_subpixel_coverage, CoverageSink};
+pub(crate) use area::{CoverageSink, walk_coverage, walk_subpixel_coverage};
 pub(crate) use subpixel::{subpixel_row_span, walk_subpixel};
 
 /// Calls `emit` with every span of the sub-pixel `triangle` inside `clip`, top to bottom, one
@@ -137,7 +137,7 @@ impl<E, F: FnMut(Span, u8) -> Result<(), E>> CoverageSink for PixelRuns<F> {
 
 use crate::{
     geometry::Triangle,
-    setup::{fits_fast_path, sort_top_to_bottom, Clip, Lane, Prepared},
+    setup::{Clip, Lane, Prepared, fits_fast_path, sort_top_to_bottom},
 };
 use edge::{EdgeStepper, ExactEdge, Rounding};
 

@@ -14,14 +14,14 @@ use embedded_graphics::{
 };
 
 use super::{
-    edge::{increments, EdgeStepper, Rounding},
     FillRule, Span, SpanSink,
+    edge::{EdgeStepper, Rounding, increments},
 };
 use crate::{
     geometry::SubPixelTriangle,
     setup::{
-        lane::{div_rem_floor_compact, floor_div_rem_i128},
         Lane,
+        lane::{div_rem_floor_compact, floor_div_rem_i128},
     },
 };
 

@@ -41,11 +41,11 @@ use embedded_graphics::{
 };
 
 use crate::{
+    Error,
     geometry::Shape,
     interpolate::AreaMemo,
-    shading::{paint::on_screen, TriangleStyle},
+    shading::{TriangleStyle, paint::on_screen},
     target::fill_run,
-    Error,
 };
 
 /// A z-buffer: one `u16` depth per pixel, row-major, in memory you provide.

@@ -7,7 +7,7 @@ use super::{DepthBuffer, DepthTest};
 use crate::{
     coverage::{FillRule, Span, SpanSink},
     geometry::Shape,
-    interpolate::{AreaMemo, TrackedPlanes, DEPTH_BITS},
+    interpolate::{AreaMemo, DEPTH_BITS, TrackedPlanes},
     shading::paint::{PaintVisitor, Painter},
 };
 

@@ -5,8 +5,8 @@ use embedded_graphics::{geometry::Point, primitives::Rectangle};
 use super::{SubPixelTriangle, Triangle};
 use crate::{
     coverage::{
-        walk, walk_coverage, walk_erased, walk_subpixel, walk_subpixel_coverage, CoverageSink,
-        FillRule, SpanSink,
+        CoverageSink, FillRule, SpanSink, walk, walk_coverage, walk_erased, walk_subpixel,
+        walk_subpixel_coverage,
     },
     interpolate::{AreaMemo, Planes},
 };

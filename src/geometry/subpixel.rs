@@ -8,8 +8,8 @@ use embedded_graphics::{
 use fixed::types::{I16F16, I24F8};
 
 use super::{
-    triangle::{half_space_covers, PointsOf},
     Orientation, Points, Triangle,
+    triangle::{PointsOf, half_space_covers},
 };
 use crate::coverage::FillRule;
 

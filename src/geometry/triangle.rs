@@ -10,8 +10,8 @@ use embedded_graphics::{
 
 use super::SubPixelTriangle;
 use crate::{
-    coverage::{row_span, subpixel_row_span, FillRule},
-    setup::{fits_fast_path, sort_top_to_bottom, Lane},
+    coverage::{FillRule, row_span, subpixel_row_span},
+    setup::{Lane, fits_fast_path, sort_top_to_bottom},
 };
 
 /// A triangle with integer vertices, in pixel coordinates (`y` grows downwards).

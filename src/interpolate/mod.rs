@@ -14,4 +14,4 @@ mod planes;
 pub use barycentric::{Barycentric, Location};
 pub(crate) use perspective::PerspectivePlanes;
 pub use perspective::{Perspective, SubSpan};
-pub(crate) use planes::{AreaMemo, Planes, TrackedPlanes, CHANNEL_BITS, DEPTH_BITS};
+pub(crate) use planes::{AreaMemo, CHANNEL_BITS, DEPTH_BITS, Planes, TrackedPlanes};

@@ -1692,11 +1692,7 @@ mod tests {
         let nx = da1 * ey2 - da2 * ey1;
         let ny = da2 * ex1 - da1 * ex2;
         let num = i128::from(a[0]) * area + nx * (i128::from(x) - x0) + ny * (i128::from(y) - y0);
-        if area < 0 {
-            (-num, -area)
-        } else {
-            (num, area)
-        }
+        if area < 0 { (-num, -area) } else { (num, area) }
     }
 
     /// `got` (raw units) within one unit of `num / den`.

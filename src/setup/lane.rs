@@ -91,11 +91,7 @@ macro_rules! floor_div_rem {
         // division-by-zero and overflow checks.
         let (value, divisor) = ($value, $divisor.max(1));
         let (q, r) = (value / divisor, value % divisor);
-        if r < 0 {
-            (q - 1, r + divisor)
-        } else {
-            (q, r)
-        }
+        if r < 0 { (q - 1, r + divisor) } else { (q, r) }
     }};
 }
 

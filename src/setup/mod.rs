@@ -8,7 +8,7 @@ pub(crate) mod reciprocal;
 
 use embedded_graphics::{geometry::Point, primitives::Rectangle};
 
-pub(crate) use lane::{all_in_fast_range, Lane};
+pub(crate) use lane::{Lane, all_in_fast_range};
 
 /// A non-degenerate triangle with vertices sorted top to bottom.
 #[derive(Copy, Clone, Debug)]

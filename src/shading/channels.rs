@@ -1,8 +1,8 @@
 //! Colour channels: what Gouraud shading, texture filtering and modulation compute with.
 
 use embedded_graphics::pixelcolor::{
-    raw::RawData, Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor,
-    PixelColor, Rgb555, Rgb565, Rgb666, Rgb888, RgbColor,
+    Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, PixelColor,
+    Rgb555, Rgb565, Rgb666, Rgb888, RgbColor, raw::RawData,
 };
 
 use crate::{target::StoredPixel, unroll::each_slot};
@@ -394,7 +394,7 @@ mod tests {
 
     #[test]
     fn rgb565_raw_blend_equals_channel_blend() {
-        use embedded_graphics::pixelcolor::{raw::RawU16, Bgr565};
+        use embedded_graphics::pixelcolor::{Bgr565, raw::RawU16};
         fn check<C: ChannelColor + From<RawU16> + core::fmt::Debug>(s: u16, d: u16, opacity: u8) {
             let (s, d) = (C::from(RawU16::new(s)), C::from(RawU16::new(d)));
             let want = over_channels(s, d, opacity);

@@ -3,8 +3,8 @@
 use embedded_graphics::{pixelcolor::PixelColor, primitives::Rectangle};
 
 use super::{
-    paint::{drawable_style, PaintVisitor, SolidPainter},
     TriangleStyle,
+    paint::{PaintVisitor, SolidPainter, drawable_style},
 };
 use crate::{coverage::FillRule, geometry::Shape};
 

@@ -5,14 +5,14 @@ use core::marker::PhantomData;
 use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Rectangle};
 
 use super::{
-    paint::{drawable_style, stored, PaintVisitor, Painter},
-    spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
+    paint::{PaintVisitor, Painter, drawable_style, stored},
+    spans::{PixelShader, shade_span},
 };
 use crate::{
     coverage::{FillRule, Span},
     geometry::Shape,
-    interpolate::{Planes, TrackedPlanes, CHANNEL_BITS},
+    interpolate::{CHANNEL_BITS, Planes, TrackedPlanes},
     unroll::per_channel,
 };
 
@@ -568,11 +568,7 @@ where
 
     /// The bit after lane `k`.
     const fn end(k: usize) -> u32 {
-        if k + 1 < N {
-            Self::STARTS[k + 1]
-        } else {
-            64
-        }
+        if k + 1 < N { Self::STARTS[k + 1] } else { 64 }
     }
 
     /// Fraction bits of each lane.

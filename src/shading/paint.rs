@@ -13,7 +13,7 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 
-use super::spans::{shade_span, PixelShader};
+use super::spans::{PixelShader, shade_span};
 use crate::{
     coverage::{CoverageSink, FillRule, Span, SpanSink},
     geometry::Shape,

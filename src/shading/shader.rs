@@ -6,9 +6,9 @@ use embedded_graphics::{
 use fixed::types::I16F16;
 
 use super::{
-    paint::{drawable_style, PaintVisitor, Painter, ShaderPainter},
-    spans::{shade_span, PlanesShader, SteppedShader},
     TriangleStyle,
+    paint::{PaintVisitor, Painter, ShaderPainter, drawable_style},
+    spans::{PlanesShader, SteppedShader, shade_span},
 };
 use crate::{
     coverage::{FillRule, Span},

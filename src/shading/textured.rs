@@ -5,9 +5,9 @@ use embedded_graphics::{draw_target::DrawTarget, geometry::Point, primitives::Re
 use fixed::types::I16F16;
 
 use super::{
-    paint::{drawable_style, stored, PaintVisitor, Painter},
-    spans::{shade_span, PixelShader},
     ChannelColor, TriangleStyle,
+    paint::{PaintVisitor, Painter, drawable_style, stored},
+    spans::{PixelShader, shade_span},
 };
 use crate::{
     coverage::{FillRule, Span},
@@ -15,8 +15,8 @@ use crate::{
     interpolate::{AreaMemo, PerspectivePlanes, Planes, TrackedPlanes},
     setup::lane::mul_small,
     texture::{
-        Axis, Filter, Narrow, Perspective, Scaled, TexelSource, Wrap, Wrapped, COORDINATE_BITS,
-        RAW_SHIFT,
+        Axis, COORDINATE_BITS, Filter, Narrow, Perspective, RAW_SHIFT, Scaled, TexelSource, Wrap,
+        Wrapped,
     },
     unroll::per_channel,
 };

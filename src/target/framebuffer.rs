@@ -3,11 +3,11 @@
 use core::{convert::Infallible, fmt, marker::PhantomData};
 
 use embedded_graphics::{
+    Pixel,
     draw_target::DrawTarget,
     geometry::{OriginDimensions, Point, Size},
     pixelcolor::PixelColor,
     primitives::Rectangle,
-    Pixel,
 };
 
 use super::StoredPixel;

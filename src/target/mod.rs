@@ -9,7 +9,7 @@ mod framebuffer;
 mod storage;
 mod translucency;
 
-pub(crate) use framebuffer::fill_run;
 pub use framebuffer::Framebuffer;
+pub(crate) use framebuffer::fill_run;
 pub use storage::StoredPixel;
-pub use translucency::{blend, BlendTarget, OverBackground, Translucent};
+pub use translucency::{BlendTarget, OverBackground, Translucent, blend};

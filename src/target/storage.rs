@@ -152,8 +152,8 @@ mod tests {
     #[test]
     fn storage_is_embedded_graphics_raw_conversion() {
         use embedded_graphics::pixelcolor::{
-            raw::{RawData, RawU1, RawU16, RawU2, RawU24, RawU4, RawU8},
             IntoStorage,
+            raw::{RawData, RawU1, RawU2, RawU4, RawU8, RawU16, RawU24},
         };
         fn check<C, R, S>(raw: S)
         where

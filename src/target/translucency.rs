@@ -14,13 +14,13 @@
 use core::convert::Infallible;
 
 use embedded_graphics::{
-    draw_target::DrawTarget, geometry::Dimensions, primitives::Rectangle, Pixel,
+    Pixel, draw_target::DrawTarget, geometry::Dimensions, primitives::Rectangle,
 };
 
 use super::{Framebuffer, StoredPixel};
 use crate::{
     geometry::Shape,
-    shading::{paint::draw_anti_aliased, ChannelColor, TriangleStyle},
+    shading::{ChannelColor, TriangleStyle, paint::draw_anti_aliased},
 };
 
 /// A target that can blend what is drawn over what it shows, at any opacity: the crate's

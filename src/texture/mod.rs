@@ -24,9 +24,9 @@
 mod address;
 mod source;
 
-pub(crate) use address::{Axis, Narrow, Scaled, Wrapped, COORDINATE_BITS, RAW_SHIFT};
+pub(crate) use address::{Axis, COORDINATE_BITS, Narrow, RAW_SHIFT, Scaled, Wrapped};
 pub use source::{
-    ImageTexels, NoTexture, RawTexels, TexelByteOrder, TexelSource, Texels, MAX_TEXTURE_SIDE,
+    ImageTexels, MAX_TEXTURE_SIDE, NoTexture, RawTexels, TexelByteOrder, TexelSource, Texels,
 };
 
 pub use crate::interpolate::{Perspective, SubSpan};

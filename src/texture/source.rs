@@ -6,8 +6,8 @@ use embedded_graphics::{
     geometry::{OriginDimensions, Point, Size},
     image::GetPixel,
     pixelcolor::{
-        raw::{BigEndian, ByteOrder, LittleEndian, RawData},
         PixelColor,
+        raw::{BigEndian, ByteOrder, LittleEndian, RawData},
     },
 };
 

@@ -5,11 +5,11 @@
 use std::convert::Infallible;
 
 use embedded_graphics::{
+    Pixel,
     draw_target::DrawTarget,
     geometry::{Dimensions, OriginDimensions, Point, Size},
     pixelcolor::{BinaryColor, PixelColor},
     primitives::Rectangle,
-    Pixel,
 };
 
 /// The fill rules, restated here so the reference does not depend on the crate.

@@ -23,8 +23,8 @@ use embedded_graphics::{
 use heapless::Vec;
 use nalgebra::Point2;
 use panic_halt as _;
-use scenes::{covered_pixels, Scene, SceneTriangle, HEIGHT, WIDTH};
-use systick::{count, Ratio};
+use scenes::{HEIGHT, Scene, SceneTriangle, WIDTH, covered_pixels};
+use systick::{Ratio, count};
 use trirast::Framebuffer;
 
 const FRAME_LEN: usize = (WIDTH * HEIGHT) as usize;

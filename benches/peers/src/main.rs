@@ -15,7 +15,7 @@ use counting::Counting;
 use embedded_3dgfx::pipeline::{assemble::primitive::DrawPrimitive, rasterize::draw::draw};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use nalgebra::Point2;
-use scenes::{Scene, SceneTriangle, HEIGHT, WIDTH};
+use scenes::{HEIGHT, Scene, SceneTriangle, WIDTH};
 use trirast::Framebuffer;
 
 const MODES: &[&str] = &["3dgfx-flat", "3dgfx-gouraud"];
