@@ -685,14 +685,7 @@ where
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
     {
-        if scene
-            .triangles
-            .iter()
-            .any(|t| t.anti_aliased || t.opacity < u8::MAX)
-        {
-            return Err(BandError::Setup(Error::BandBlending));
-        }
-        self.render_each::<_, _, N, T, G, false>(scene, background, to_target(target))
+        self.render_with(scene, background, to_target(target))
     }
 
     /// [`Bands::render`] for scenes that also hold translucent and anti-aliased triangles
@@ -739,7 +732,7 @@ where
         TextureStyle<T>: crate::shading::TriangleStyle<Color = C>,
         GouraudStyle<C>: crate::shading::TriangleStyle<Color = C>,
     {
-        self.render_each::<_, _, N, T, G, true>(scene, background, to_target(target))
+        self.render_blended_with(scene, background, to_target(target))
     }
 
     /// Renders `scene` as [`Bands::render`] does, but hands each finished band to `flush` as

@@ -247,6 +247,14 @@ fn banded<G: SceneShape>(
     }
 }
 
+/// Whether `scene` holds translucent or anti-aliased triangles, which plain rendering refuses.
+fn blends<G: SceneShape>(scene: &TestScene<'_, G>) -> bool {
+    scene
+        .triangles()
+        .iter()
+        .any(|t| t.anti_aliased || t.opacity < u8::MAX)
+}
+
 fn render_into<K: SetupCache, G: SceneShape>(
     bands: &mut Bands<'_, Rgb565, Rgb565, K>,
     scene: &TestScene<'_, G>,
@@ -255,11 +263,7 @@ fn render_into<K: SetupCache, G: SceneShape>(
     let mut pixels = vec![Rgb565::new(1, 2, 3); (W * H) as usize];
     let mut frame = Framebuffer::new(&mut pixels, W, H).unwrap();
     let mut frame = frame.translated(Point::zero() - scene.screen().top_left);
-    let blends = scene
-        .triangles()
-        .iter()
-        .any(|t| t.anti_aliased || t.opacity < u8::MAX);
-    if blends {
+    if blends(scene) {
         // Plain rendering refuses blending, and leaves the display untouched.
         let refused = bands.render(scene, background, &mut frame);
         assert_eq!(refused, Err(BandError::Setup(Error::BandBlending)));
@@ -302,11 +306,7 @@ fn flushed<G: SceneShape>(
         pixels.extend_from_slice(band);
         Ok::<(), ()>(())
     };
-    let blends = scene
-        .triangles()
-        .iter()
-        .any(|t| t.anti_aliased || t.opacity < u8::MAX);
-    if blends {
+    if blends(scene) {
         let refused = bands.render_with(scene, background, &mut flush);
         assert_eq!(refused, Err(BandError::Setup(Error::BandBlending)));
         bands
