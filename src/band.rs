@@ -16,8 +16,9 @@
 //! For a 320 x 240 `Rgb565` screen: a 16-row band is 320 x 16 x 2 = 10,240 bytes, its depth band
 //! another 10,240; a 200-triangle scene is 200 x `size_of::<SceneTriangle<Rgb565, _>>()`: 112
 //! bytes each on 32-bit microcontrollers (22,400 in all; 128 bytes on a 64-bit host). The full
-//! frame and its depth buffer would be 153,600 bytes each. Keeping each triangle's set-up
-//! between bands ([`Bands::with_setup_cache`], 120 bytes a triangle) trades memory for speed.
+//! frame and its depth buffer would be 153,600 bytes each. Keeping each triangle's set-up and
+//! walk between bands ([`Bands::with_setup_cache`], 208 bytes a triangle) trades memory for
+//! speed.
 //!
 //! # Examples
 //!

@@ -137,7 +137,7 @@ impl<T: Lane> EdgeStepper<T> {
     /// `-dy..0`) and increments `step` and `remainder` (`dx = step dy + remainder`,
     /// `remainder` in `0..dy`): for edges started otherwise (sub-pixel vertices).
     #[inline(always)]
-    pub(crate) fn from_parts(x: T, error: T, (step, remainder): (T, T), dy: T) -> Self {
+    pub(crate) const fn from_parts(x: T, error: T, (step, remainder): (T, T), dy: T) -> Self {
         Self {
             x,
             error,

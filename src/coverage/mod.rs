@@ -8,6 +8,7 @@
 mod area;
 mod edge;
 mod fill_rule;
+mod rows;
 mod subpixel;
 
 use embedded_graphics::{
@@ -18,6 +19,8 @@ use embedded_graphics::{
 pub use fill_rule::FillRule;
 
 pub(crate) use area::{CoverageSink, walk_coverage, walk_subpixel_coverage};
+pub(crate) use rows::KeptWalk;
+use rows::RowWalk;
 pub(crate) use subpixel::{subpixel_row_span, walk_subpixel};
 
 /// Calls `emit` with every span of the sub-pixel `triangle` inside `clip`, top to bottom, one
@@ -139,7 +142,7 @@ use crate::{
     geometry::Triangle,
     setup::{Clip, Lane, Prepared, fits_fast_path, sort_top_to_bottom},
 };
-use edge::{EdgeStepper, ExactEdge, Rounding};
+use edge::{ExactEdge, Rounding};
 
 /// A run of covered pixels on one row: `len` pixels starting at `(x, y)`.
 ///
@@ -355,14 +358,47 @@ pub(crate) fn walk_erased<E>(
     walk(triangle, rule, clip, sink)
 }
 
+/// [`walk_erased`] for a triangle drawn window after window down the screen (bands): it goes
+/// on from the walk `kept` left at this window's first row, if any, rather than starting again
+/// (sorting, orienting and jumping its edges down), and when `later` leaves its walk there for
+/// the window below (when the triangle goes on below).
+#[inline(never)]
+pub(crate) fn walk_kept_erased<E>(
+    triangle: &Triangle,
+    rule: FillRule,
+    clip: &Rectangle,
+    sink: &mut dyn SpanSink<Error = E>,
+    kept: &KeptWalk,
+    later: bool,
+) -> Result<(), E> {
+    let Some(window) = Clip::fast(clip) else {
+        return Ok(());
+    };
+    let rows = if let Some(rows) = kept.resume(&window) {
+        rows
+    } else {
+        let sorted = sort_top_to_bottom(triangle.vertices);
+        if !fits_fast_path(&sorted) {
+            return walk_erased(triangle, rule, clip, sink);
+        }
+        let Some(rows) = RowWalk::start(sorted, rule, window) else {
+            return Ok(());
+        };
+        rows
+    };
+    rows.run(&window, sink, later.then_some(kept))
+}
+
 /// The rows a triangle covers inside a window, and how its edges round there: what the fast
 /// and the wide walk share.
 struct RowPlan<T> {
     triangle: Prepared<T>,
     clip: Clip<T>,
-    /// First row to emit and the end of the rows (exclusive).
+    /// First row to emit and the end of the rows (exclusive), in the window.
     first: T,
     end: T,
+    /// The end of the triangle's rows, wherever the window ends.
+    rows_end: T,
     /// The first row the lower short edge serves (never reached with a flat bottom).
     switch: T,
     /// Under the top-left rule, the first row is the one below a lone top vertex, whose own row
@@ -407,34 +443,42 @@ impl<T: Lane> RowPlan<T> {
             clip,
             first,
             end,
+            rows_end,
             switch,
             skip_apex,
             long_rounding,
             short_rounding,
         })
     }
-
-    /// Emits the span between bounds `l` and `r` on `row`, clipped to the window, if any.
-    #[inline(always)]
-    fn emit<K: SpanSink + ?Sized>(&self, l: T, r: T, row: T, sink: &mut K) -> Result<(), K::Error> {
-        let l = l.max(self.clip.x0);
-        let r = r.min(self.clip.x1);
-        if l < r {
-            // Values inside the window, whose coordinates and width fit.
-            let span = Span {
-                x: l.to_i64() as i32,
-                y: row.to_i64() as i32,
-                len: T::len_u32(r, l),
-            };
-            sink.span(span)?;
-        }
-        Ok(())
-    }
 }
 
-/// The fast walk, in 32-bit arithmetic: the one row loop of the crate. Rows and columns are
-/// clipped by bounds computed once, so triangles inside the window and triangles crossing its
-/// edges take the same code; each row costs two edge steps, a clip and the sink.
+/// Emits the span between bounds `l` and `r` on `row`, clipped to the window `clip`, if any.
+#[inline(always)]
+fn emit<T: Lane, K: SpanSink + ?Sized>(
+    clip: &Clip<T>,
+    l: T,
+    r: T,
+    row: T,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let l = l.max(clip.x0);
+    let r = r.min(clip.x1);
+    if l < r {
+        // Values inside the window, whose coordinates and width fit.
+        let span = Span {
+            x: l.to_i64() as i32,
+            y: row.to_i64() as i32,
+            len: T::len_u32(r, l),
+        };
+        sink.span(span)?;
+    }
+    Ok(())
+}
+
+/// The fast walk, in 32-bit arithmetic: the one row loop of the crate ([`RowWalk::run`]).
+/// Rows and columns are clipped by bounds computed once, so triangles inside the window and
+/// triangles crossing its edges take the same code; each row costs two edge steps, a clip and
+/// the sink.
 #[inline(always)]
 fn walk_fast<K: SpanSink + ?Sized>(
     sorted: [Point; 3],
@@ -442,66 +486,12 @@ fn walk_fast<K: SpanSink + ?Sized>(
     clip: &Rectangle,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let Some(plan) = Clip::fast(clip).and_then(|clip| RowPlan::<i32>::new(sorted, rule, clip))
-    else {
+    let Some(clip) = Clip::fast(clip) else {
         return Ok(());
     };
-    let [top, middle, bottom] = plan.triangle.sorted;
-    let mut row = plan.first;
-    // Edges start at `row`; after a skipped apex, from the vertex and one step down, which
-    // needs no division.
-    let start = |upper: (i32, i32), lower: (i32, i32), rounding: Rounding, below_apex: bool| {
-        if below_apex {
-            let mut edge = EdgeStepper::start(upper, lower, rounding, upper.1);
-            edge.advance();
-            edge
-        } else {
-            EdgeStepper::start(upper, lower, rounding, row)
-        }
-    };
-    let upper_half = row < plan.switch;
-    let long = start(top, bottom, plan.long_rounding, plan.skip_apex);
-    let short = if upper_half {
-        start(top, middle, plan.short_rounding, plan.skip_apex)
-    } else {
-        start(middle, bottom, plan.short_rounding, false)
-    };
-    let long_left = plan.triangle.long_edge_left;
-    let (mut left, mut right) = if long_left {
-        (long, short)
-    } else {
-        (short, long)
-    };
-    // Rows run in at most two stretches, above and below the middle vertex, so each row
-    // tests one bound only.
-    let mut stop = if upper_half {
-        plan.switch.min(plan.end)
-    } else {
-        plan.end
-    };
-    loop {
-        loop {
-            plan.emit(left.x(), right.x(), row, sink)?;
-            row += 1;
-            if row == stop {
-                break;
-            }
-            left.advance();
-            right.advance();
-        }
-        if row == plan.end {
-            return Ok(());
-        }
-        // The short edge turns at the middle vertex, where its bound needs no division.
-        stop = plan.end;
-        let lower = EdgeStepper::start(middle, bottom, plan.short_rounding, row);
-        if long_left {
-            left.advance();
-            right = lower;
-        } else {
-            right.advance();
-            left = lower;
-        }
+    match RowWalk::start(sorted, rule, clip) {
+        Some(rows) => rows.run(&clip, sink, None),
+        None => Ok(()),
     }
 }
 
@@ -567,7 +557,7 @@ fn walk_wide(
         } else {
             (short.at(row), long.at(row))
         };
-        plan.emit(l, r, row, sink)?;
+        emit(&plan.clip, l, r, row, sink)?;
         row += 1;
     }
     Ok(())

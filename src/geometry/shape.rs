@@ -5,8 +5,8 @@ use embedded_graphics::{geometry::Point, primitives::Rectangle};
 use super::{SubPixelTriangle, Triangle};
 use crate::{
     coverage::{
-        CoverageSink, FillRule, SpanSink, walk, walk_coverage, walk_erased, walk_subpixel,
-        walk_subpixel_coverage,
+        CoverageSink, FillRule, KeptWalk, SpanSink, walk, walk_coverage, walk_erased,
+        walk_kept_erased, walk_subpixel, walk_subpixel_coverage,
     },
     interpolate::{AreaMemo, Planes},
 };
@@ -54,6 +54,23 @@ pub trait Shape: sealed::Sealed {
         clip: &Rectangle,
         sink: &mut dyn SpanSink<Error = E>,
     ) -> Result<(), E>;
+
+    /// [`Shape::walk_spans_erased`] window after window down the screen (bands): going on
+    /// from the walk `kept` left at `clip`'s first row, and leaving the walk at its last for
+    /// the window below when `later`. Shapes without such a walk start again in every window.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn walk_spans_erased_kept<E>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut dyn SpanSink<Error = E>,
+        kept: &KeptWalk,
+        later: bool,
+    ) -> Result<(), E> {
+        let _ = (kept, later);
+        self.walk_spans_erased(rule, clip, sink)
+    }
 
     /// Feeds the area coverage inside `clip` to `sink`.
     #[doc(hidden)]
@@ -148,6 +165,18 @@ impl Shape for Triangle {
         sink: &mut dyn SpanSink<Error = E>,
     ) -> Result<(), E> {
         walk_erased(self, rule, clip, sink)
+    }
+
+    #[inline(always)]
+    fn walk_spans_erased_kept<E>(
+        &self,
+        rule: FillRule,
+        clip: &Rectangle,
+        sink: &mut dyn SpanSink<Error = E>,
+        kept: &KeptWalk,
+        later: bool,
+    ) -> Result<(), E> {
+        walk_kept_erased(self, rule, clip, sink, kept, later)
     }
 
     #[inline(always)]
