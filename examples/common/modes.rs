@@ -628,7 +628,19 @@ fn draw_bands<'w, const N: usize, K: SetupCache>(
         .and_then(|bands| bands.with_depth(work.depth_band))
         .map(configure);
     if let Ok(mut bands) = bands {
-        let _ = bands.render(list, Rgb565::BLACK, frame);
+        // Each band is whole rows of the frame, stored as the frame stores them: copied as one
+        // run (`render` would draw it through the frame's `DrawTarget`, a pixel at a time).
+        let width = frame.size().width as usize;
+        let _ = bands.render_with(list, Rgb565::BLACK, |area, pixels| {
+            let start = area.top_left.y as usize * width;
+            match frame.pixels_mut().get_mut(start..start + pixels.len()) {
+                Some(rows) => {
+                    rows.copy_from_slice(pixels);
+                    Ok(())
+                }
+                None => Err(()),
+            }
+        });
     }
 }
 
