@@ -280,11 +280,12 @@ impl<G: Shape, Keep: SetupCache> Shape for Cached<'_, G, Keep> {
         clip: &Rectangle,
         sink: &mut dyn SpanSink<Error = E>,
     ) -> Result<(), E> {
+        // Triangles within one band (most small ones) walk as in a frame.
         match self.slot() {
-            Some(slot) => self
+            Some(slot) if self.later || slot.walk.holds() => self
                 .shape
                 .walk_spans_erased_kept(rule, clip, sink, &slot.walk, self.later),
-            None => self.shape.walk_spans_erased(rule, clip, sink),
+            _ => self.shape.walk_spans_erased(rule, clip, sink),
         }
     }
 

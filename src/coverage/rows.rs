@@ -56,6 +56,12 @@ impl KeptWalk {
         walk: Cell::new(RowWalk::PARKED),
     };
 
+    /// Whether a walk is kept.
+    #[inline(always)]
+    pub(crate) fn holds(&self) -> bool {
+        self.at.get().is_some()
+    }
+
     /// Forgets the kept walk.
     #[inline(always)]
     pub(crate) fn forget(&self) {
