@@ -17,7 +17,7 @@
 //! another 10,240; a 200-triangle scene is 200 x `size_of::<SceneTriangle<Rgb565, _>>()`: 112
 //! bytes each on 32-bit microcontrollers (22,400 in all; 128 bytes on a 64-bit host). The full
 //! frame and its depth buffer would be 153,600 bytes each. Keeping each triangle's set-up and
-//! walk between bands ([`Bands::with_setup_cache`], 208 bytes a triangle) trades memory for
+//! walk between bands ([`Bands::with_setup_cache`], 192 bytes a triangle) trades memory for
 //! speed.
 //!
 //! # Examples

@@ -494,5 +494,5 @@ fn scene_sizes() {
     // style's perspective 16 more); 112 on 32-bit Cortex-M.
     assert!(triangle <= 128, "{triangle} bytes per scene triangle");
     // What `SetupSlot`'s documentation promises, on hosts and on Cortex-M alike (no pointers).
-    assert_eq!(core::mem::size_of::<SetupSlot>(), 208);
+    assert_eq!(core::mem::size_of::<SetupSlot>(), 192);
 }

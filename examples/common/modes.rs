@@ -31,8 +31,8 @@ pub const FRAME_LEN: usize = (WIDTH * HEIGHT) as usize;
 /// Triangles in the largest scene (`small`).
 pub const MAX_TRIANGLES: usize = 5000;
 
-/// Set-up slots of `BandCache`: one per triangle of the largest scene (208 bytes each on
-/// Cortex-M; `scene200` would need 200, 41,600 bytes).
+/// Set-up slots of `BandCache`: one per triangle of the largest scene (192 bytes each on
+/// Cortex-M; `scene200` would need 200, 38,400 bytes).
 pub const SETUP_SLOTS: usize = MAX_TRIANGLES;
 
 /// The modes the firmware runs, in order.

@@ -19,7 +19,7 @@ const SLOT_WORDS: usize = 14;
 
 /// Room for one triangle's interpolation set-up between bands ([`Bands::with_setup_cache`]),
 /// and for where its walk stopped at the last band's bottom, so that the next band goes on from
-/// there instead of starting the triangle again: 208 bytes (120 of set-up, 88 of walk), on
+/// there instead of starting the triangle again: 192 bytes (120 of set-up, 72 of walk), on
 /// 32-bit microcontrollers as on 64-bit hosts.
 ///
 /// Slot `k` keeps the set-up of the scene's triangle `k` within one frame; each render

@@ -38,72 +38,118 @@ pub(crate) struct RowWalk {
     long_left: bool,
 }
 
-/// Where a triangle's walk stopped at a window's bottom, kept for the window below.
+/// Where a triangle's walk stopped at a window's bottom, kept for the window below: 72 bytes
+/// (a [`RowWalk`] without what each window sets again, its flags in a byte).
 #[derive(Debug)]
 pub struct KeptWalk {
-    /// The row the kept walk goes on from, if any.
-    at: Cell<Option<i32>>,
-    walk: Cell<RowWalk>,
+    /// The row the kept walk goes on from.
+    row: Cell<i32>,
+    /// [`KeptWalk::HELD`], [`KeptWalk::LONG_LEFT`], [`KeptWalk::FLOOR_PLUS_ONE`].
+    flags: Cell<u8>,
+    edges: Cell<KeptEdges>,
+}
+
+/// The part of a [`RowWalk`] a window does not set again.
+#[derive(Copy, Clone, Debug)]
+struct KeptEdges {
+    left: EdgeStepper<i32>,
+    right: EdgeStepper<i32>,
+    switch: i32,
+    triangle_end: i32,
+    middle: (i32, i32),
+    bottom: (i32, i32),
 }
 
 impl KeptWalk {
+    /// A walk is kept.
+    const HELD: u8 = 1;
+    /// Its long edge bounds the left.
+    const LONG_LEFT: u8 = 2;
+    /// Its short edges round as [`Rounding::FloorPlusOne`].
+    const FLOOR_PLUS_ONE: u8 = 4;
+
     /// Nothing kept.
     // A constant, for `SetupSlot::EMPTY` (itself a constant for arrays of slots); every use is
     // a fresh one.
     #[allow(clippy::declare_interior_mutable_const)]
     pub(crate) const NONE: Self = Self {
-        at: Cell::new(None),
-        walk: Cell::new(RowWalk::PARKED),
+        row: Cell::new(0),
+        flags: Cell::new(0),
+        // All zeros (never read unless a walk is kept): slots start as zeroed memory.
+        edges: Cell::new(KeptEdges {
+            left: EdgeStepper::from_parts(0, 0, (0, 0), 0),
+            right: EdgeStepper::from_parts(0, 0, (0, 0), 0),
+            switch: 0,
+            triangle_end: 0,
+            middle: (0, 0),
+            bottom: (0, 0),
+        }),
     };
 
     /// Whether a walk is kept.
     #[inline(always)]
     pub(crate) fn holds(&self) -> bool {
-        self.at.get().is_some()
+        self.flags.get() & Self::HELD != 0
     }
 
     /// Forgets the kept walk.
     #[inline(always)]
     pub(crate) fn forget(&self) {
-        self.at.set(None);
+        self.flags.set(0);
     }
 
     /// The walk kept for the window `clip` (which starts at the row it stopped above), on to
     /// that window's end.
     #[inline(always)]
     pub(super) fn resume(&self, clip: &Clip<i32>) -> Option<RowWalk> {
-        if self.at.get() != Some(clip.y0) {
+        let flags = self.flags.get();
+        if flags & Self::HELD == 0 || self.row.get() != clip.y0 {
             return None;
         }
-        let mut walk = self.walk.get();
-        walk.end = walk.triangle_end.min(clip.y1);
-        walk.stop = walk.switch.min(walk.end);
-        Some(walk)
+        let edges = self.edges.get();
+        let end = edges.triangle_end.min(clip.y1);
+        Some(RowWalk {
+            left: edges.left,
+            right: edges.right,
+            row: clip.y0,
+            stop: edges.switch.min(end),
+            end,
+            switch: edges.switch,
+            triangle_end: edges.triangle_end,
+            middle: edges.middle,
+            bottom: edges.bottom,
+            short_rounding: if flags & Self::FLOOR_PLUS_ONE != 0 {
+                Rounding::FloorPlusOne
+            } else {
+                Rounding::Ceil
+            },
+            long_left: flags & Self::LONG_LEFT != 0,
+        })
     }
 
     #[inline(always)]
     fn keep(&self, walk: RowWalk) {
-        self.at.set(Some(walk.row));
-        self.walk.set(walk);
+        let mut flags = Self::HELD;
+        if walk.long_left {
+            flags |= Self::LONG_LEFT;
+        }
+        if walk.short_rounding == Rounding::FloorPlusOne {
+            flags |= Self::FLOOR_PLUS_ONE;
+        }
+        self.row.set(walk.row);
+        self.flags.set(flags);
+        self.edges.set(KeptEdges {
+            left: walk.left,
+            right: walk.right,
+            switch: walk.switch,
+            triangle_end: walk.triangle_end,
+            middle: walk.middle,
+            bottom: walk.bottom,
+        });
     }
 }
 
 impl RowWalk {
-    /// A walk of no triangle, never resumed (all zeros: slots start as zeroed memory).
-    const PARKED: Self = Self {
-        left: EdgeStepper::from_parts(0, 0, (0, 0), 0),
-        right: EdgeStepper::from_parts(0, 0, (0, 0), 0),
-        row: 0,
-        stop: 0,
-        end: 0,
-        switch: 0,
-        triangle_end: 0,
-        middle: (0, 0),
-        bottom: (0, 0),
-        short_rounding: Rounding::Ceil,
-        long_left: false,
-    };
-
     /// The walk of the triangle `sorted` (by `sort_top_to_bottom`, every coordinate in the fast
     /// range) at its first row inside `clip`; `None` when it covers no row there (or is
     /// degenerate).
