@@ -219,6 +219,20 @@ fn full_frame<G: SceneShape>(
     pixels
 }
 
+/// Bands of `rows` rows over `band` and `depth_band`, cleared to depth `far`.
+fn depth_bands<'b>(
+    band: &'b mut [Rgb565],
+    depth_band: &'b mut [u16],
+    rows: u32,
+    far: u16,
+) -> Bands<'b, Rgb565> {
+    Bands::new(band, W, rows)
+        .unwrap()
+        .with_depth(depth_band)
+        .unwrap()
+        .with_far_depth(far)
+}
+
 /// The scene rendered in bands of `rows` rows, keeping set-ups in `setups` if given (rendered
 /// twice then: the second frame must not use the first's set-ups wrongly).
 fn banded<G: SceneShape>(
@@ -230,11 +244,7 @@ fn banded<G: SceneShape>(
 ) -> Vec<Rgb565> {
     let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
     let mut depth_band = vec![0u16; (W * rows) as usize];
-    let mut bands = Bands::new(&mut band, W, rows)
-        .unwrap()
-        .with_depth(&mut depth_band)
-        .unwrap()
-        .with_far_depth(far);
+    let mut bands = depth_bands(&mut band, &mut depth_band, rows, far);
     match setups {
         None => render_into(&mut bands, scene, background),
         Some(slots) => {
@@ -288,11 +298,7 @@ fn flushed<G: SceneShape>(
 ) -> Vec<Rgb565> {
     let mut band = vec![Rgb565::BLACK; (W * rows) as usize];
     let mut depth_band = vec![0u16; (W * rows) as usize];
-    let mut bands = Bands::new(&mut band, W, rows)
-        .unwrap()
-        .with_depth(&mut depth_band)
-        .unwrap()
-        .with_far_depth(far);
+    let mut bands = depth_bands(&mut band, &mut depth_band, rows, far);
     let screen = scene.screen();
     let mut pixels = Vec::new();
     let mut flush = |area: &Rectangle, band: &[Rgb565]| {
