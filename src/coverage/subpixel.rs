@@ -21,7 +21,7 @@ use crate::{
     geometry::SubPixelTriangle,
     setup::{
         Lane,
-        lane::{div_rem_floor_compact, floor_div_rem_i128},
+        lane::{div_rem_floor_short, floor_div_rem_i128},
     },
 };
 
@@ -93,7 +93,7 @@ impl<T: Lane> SubEdge<T> {
         // library calls on Cortex-M0).
         let narrow = |v: T| v.to_i64() as i32;
         let (dx, dy, down) = (narrow(dx), narrow(dy), narrow(down));
-        let (step, rest) = increments(dx, dy, div_rem_floor_compact);
+        let (step, rest) = increments(dx, dy, div_rem_floor_short);
         let upper_x = narrow(upper.0);
         let moved = (upper_x & 0xFF) + down * step;
         let mut x = (upper_x >> 8) + (moved >> 8);
