@@ -498,12 +498,30 @@ impl<P: Coord> Chain<P> {
         }
     }
 
+    /// Whether one edge crosses the strip `top..top + ONE` whole (no vertex inside): the
+    /// common row.
+    #[inline(always)]
+    fn crosses(&self, top: P) -> bool {
+        self.edges[..self.count]
+            .get(self.next)
+            .is_some_and(|edge| edge.a.y < top && edge.b.y > top + P::PIXEL)
+    }
+
+    /// The piece of the strip `top..top + ONE` that [`Chain::crosses`] found.
+    #[inline(always)]
+    fn across(&mut self, top: P) -> Piece<P> {
+        let edge = &mut self.edges[self.next];
+        let (start_x, end_x) = (edge.x_at(top), edge.x_at(top + P::PIXEL));
+        edge.piece(P::PIXEL, start_x, end_x)
+    }
+
     /// The pieces of this chain inside the strip `top..top + ONE`.
     #[inline]
     fn pieces(&mut self, top: P, out: &mut [Piece<P>; MAX_EDGES]) -> usize {
         let bottom = top + P::PIXEL;
-        // The common row: one edge across the whole strip, its ends where it crosses the
-        // strip's top and bottom (what the general case below makes of it too).
+        // One edge across the whole strip on this side only (the common row, both sides so,
+        // does not come here): its ends where it crosses the strip's top and bottom (what the
+        // general case below makes of it too).
         if let Some(edge) = self.edges[..self.count].get_mut(self.next) {
             if edge.a.y < top && edge.b.y > bottom {
                 let (start_x, end_x) = (edge.x_at(top), edge.x_at(bottom));
@@ -889,16 +907,62 @@ fn walk_chains<P: Coord, K: CoverageSink>(
     // Rows within the clip: i32.
     for row in first_row.low()..last_row.low() {
         let strip = P::narrow(i64::from(row)) << FRAC;
-        bounds.lefts = left.pieces(strip, &mut bounds.left);
-        bounds.rights = right.pieces(strip, &mut bounds.right);
-        bounds.rows = bounds.left[..bounds.lefts].iter().map(|p| p.rows).sum();
+        run.y = row.wrapping_add(origin.1);
+        if left.crosses(strip) && right.crosses(strip) {
+            // The common row. Each edge's crossings are stepped once: its piece is the row's.
+            let (l, r) = (left.across(strip), right.across(strip));
+            if let Some(done) = common_row(&l, &r, (column_start, column_end), &mut run, sink) {
+                done?;
+                continue;
+            }
+            (bounds.left[0], bounds.right[0]) = (l, r);
+            (bounds.lefts, bounds.rights, bounds.rows) = (1, 1, P::PIXEL);
+        } else {
+            bounds.lefts = left.pieces(strip, &mut bounds.left);
+            bounds.rights = right.pieces(strip, &mut bounds.right);
+            bounds.rows = bounds.left[..bounds.lefts].iter().map(|p| p.rows).sum();
+        }
         if bounds.lefts == 0 || bounds.rights == 0 || bounds.rows == P::ZERO {
             continue;
         }
-        run.y = row.wrapping_add(origin.1);
         row_coverage(&bounds, (column_start, column_end), &mut run, sink)?;
     }
     Ok(())
+}
+
+/// The common row, most rows of a large triangle: on each side one edge crosses the whole
+/// strip (`left` and `right`, from [`Chain::across`]), and the two sides' columns lie apart.
+/// Hands `sink` what [`row_coverage`] would from the same pieces, without gathering them into
+/// a [`RowBoundaries`]; `None` when the sides share a column.
+#[inline(always)]
+fn common_row<P: Coord, K: CoverageSink>(
+    left: &Piece<P>,
+    right: &Piece<P>,
+    clip: (P, P),
+    run: &mut EdgeRun,
+    sink: &mut K,
+) -> Option<Result<(), K::Error>> {
+    let left_end = (left.right + P::PIXEL_LESS_ONE) >> FRAC;
+    let right_start = right.left >> FRAC;
+    if left_end >= right_start {
+        return None;
+    }
+    let emit = |run: &mut EdgeRun, sink: &mut K| {
+        lone_piece_columns(left, true, P::PIXEL, clip, run, sink)?;
+        run.flush(sink)?;
+        let (from, to) = (left_end.max(clip.0), right_start.min(clip.1));
+        if from < to {
+            let span = Span {
+                x: from.low().wrapping_add(run.origin),
+                y: run.y,
+                len: (to - from).low() as u32,
+            };
+            sink.interior(span, u8::MAX)?;
+        }
+        lone_piece_columns(right, false, P::PIXEL, clip, run, sink)?;
+        run.flush(sink)
+    };
+    Some(emit(run, sink))
 }
 
 /// Hands `sink` one row's coverage within columns `clip.0..clip.1`: the left edge's columns,
