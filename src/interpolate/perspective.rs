@@ -14,7 +14,7 @@ use fixed::types::I16F16;
 use super::{AreaMemo, TrackedPlanes};
 use crate::geometry::Shape;
 use crate::setup::{
-    lane::{mul_i32_u32, mul_small, mul_u32, shr64},
+    lane::{mul_i32_u32, mul_small, mul_u32, shl64, shr64},
     reciprocal::{reciprocal, reciprocal_inline},
 };
 
@@ -206,7 +206,9 @@ fn normalised(w: [I16F16; 3]) -> [u32; 3] {
             // nearest * 2^30 / w, through 2^63 / (w * 2^zeros).
             let (normal, zeros) = normalise(*q);
             let scaled = mul_u32(nearest, reciprocal(normal));
-            *q = ((scaled >> (33 - zeros)) as u32).max(1);
+            // `zeros` is at least 1 (weights are below 2^31): a shift of 2 to 32, without the
+            // variable 64-bit shift's library call on Cortex-M0.
+            *q = (shr64(scaled, 33 - zeros) as u32).max(1);
         }
     }
     q
@@ -286,7 +288,8 @@ impl<const P: usize, const N: usize> PerspectivePlanes<P, N> {
             shift,
         };
         for k in 0..P {
-            this.across[k] = this.planes.dx[k] << shift;
+            // 3 to 5 bits: without the variable 64-bit shift's library call on Cortex-M0.
+            this.across[k] = shl64(this.planes.dx[k] as u64, shift) as i64;
         }
         for k in 0..N {
             this.base[k] = base[k].wrapping_add(bias) as i32;
