@@ -236,22 +236,24 @@ pub(crate) fn div_rem_floor_compact(value: i32, divisor: i32) -> (i32, i32) {
 /// tests cost its registers: flat `small` +18%).
 #[inline(always)]
 pub(crate) fn div_rem_floor_short(value: i32, divisor: i32) -> (i32, i32) {
-    if crate::arch::DIVIDES {
-        floor_div_rem!(value, divisor)
-    } else {
-        div_rem_floor_short_counted(value, divisor)
+    if !crate::arch::DIVIDES {
+        if let Some(result) = one_or_minus_two(value, divisor) {
+            return result;
+        }
     }
+    div_rem_floor_compact(value, divisor)
 }
 
-/// [`div_rem_floor_short`] on Cortex-M0; tested on every host.
+/// `(floor(value / divisor), value mod divisor)` when the quotient is 1 or -2, for a positive
+/// divisor; `None` for any other quotient.
 #[inline(always)]
-fn div_rem_floor_short_counted(value: i32, divisor: i32) -> (i32, i32) {
+fn one_or_minus_two(value: i32, divisor: i32) -> Option<(i32, i32)> {
     if value >= divisor && value - divisor < divisor {
-        (1, value - divisor)
+        Some((1, value - divisor))
     } else if value < -divisor && value + divisor >= -divisor {
-        (-2, value + divisor + divisor)
+        Some((-2, value + divisor + divisor))
     } else {
-        div_rem_floor_counted(value, divisor)
+        None
     }
 }
 
@@ -666,7 +668,11 @@ mod tests {
         let check = |n: i32, d: i32| {
             let want = (n.div_euclid(d), n.rem_euclid(d));
             assert_eq!(div_rem_floor_counted(n, d), want, "{n} / {d}");
-            assert_eq!(div_rem_floor_short_counted(n, d), want, "{n} / {d}");
+            if let Some(got) = one_or_minus_two(n, d) {
+                assert_eq!(got, want, "{n} / {d}");
+            } else {
+                assert!(!matches!(want.0, 1 | -2), "{n} / {d}");
+            }
         };
         let edges = [
             0,
