@@ -518,17 +518,13 @@ impl<P: Coord> Chain<P> {
     /// The pieces of this chain inside the strip `top..top + ONE`.
     #[inline]
     fn pieces(&mut self, top: P, out: &mut [Piece<P>; MAX_EDGES]) -> usize {
-        let bottom = top + P::PIXEL;
         // One edge across the whole strip on this side only (the common row, both sides so,
-        // does not come here): its ends where it crosses the strip's top and bottom (what the
-        // general case below makes of it too).
-        if let Some(edge) = self.edges[..self.count].get_mut(self.next) {
-            if edge.a.y < top && edge.b.y > bottom {
-                let (start_x, end_x) = (edge.x_at(top), edge.x_at(bottom));
-                out[0] = edge.piece(P::PIXEL, start_x, end_x);
-                return 1;
-            }
+        // does not come here): what the general case below makes of it too.
+        if self.crosses(top) {
+            out[0] = self.across(top);
+            return 1;
         }
+        let bottom = top + P::PIXEL;
         while self.next < self.count && self.edges[self.next].b.y <= top {
             self.next += 1;
         }
@@ -952,19 +948,36 @@ fn common_row<P: Coord, K: CoverageSink>(
     let emit = |run: &mut EdgeRun, sink: &mut K| {
         lone_piece_columns(left, true, P::PIXEL, clip, run, sink)?;
         run.flush(sink)?;
-        let (from, to) = (left_end.max(clip.0), right_start.min(clip.1));
-        if from < to {
+        interior((left_end, right_start), P::PIXEL, clip, run, sink)?;
+        lone_piece_columns(right, false, P::PIXEL, clip, run, sink)?;
+        run.flush(sink)
+    };
+    Some(emit(run, sink))
+}
+
+/// Hands `sink` the interior of the run's row, columns `from..to` within `clip`, covered by a
+/// strip `rows` high (1/4096 units), if any of it is inside and covered.
+#[inline(always)]
+fn interior<P: Coord, K: CoverageSink>(
+    (from, to): (P, P),
+    rows: P,
+    clip: (P, P),
+    run: &EdgeRun,
+    sink: &mut K,
+) -> Result<(), K::Error> {
+    let (from, to) = (from.max(clip.0), to.min(clip.1));
+    if from < to {
+        let alpha = opacity(rows << FRAC);
+        if alpha > 0 {
             let span = Span {
                 x: from.low().wrapping_add(run.origin),
                 y: run.y,
                 len: (to - from).low() as u32,
             };
-            sink.interior(span, u8::MAX)?;
+            sink.interior(span, alpha)?;
         }
-        lone_piece_columns(right, false, P::PIXEL, clip, run, sink)?;
-        run.flush(sink)
-    };
-    Some(emit(run, sink))
+    }
+    Ok(())
 }
 
 /// Hands `sink` one row's coverage within columns `clip.0..clip.1`: the left edge's columns,
@@ -991,18 +1004,7 @@ fn row_coverage<P: Coord, K: CoverageSink>(
         boundary_columns(bounds, (left_start, left_end), clip, run, sink)?;
     }
     run.flush(sink)?;
-    let (from, to) = (left_end.max(clip.0), right_start.min(clip.1));
-    if from < to {
-        let alpha = opacity(bounds.rows << FRAC);
-        if alpha > 0 {
-            let span = Span {
-                x: from.low().wrapping_add(run.origin),
-                y: run.y,
-                len: (to - from).low() as u32,
-            };
-            sink.interior(span, alpha)?;
-        }
-    }
+    interior((left_end, right_start), bounds.rows, clip, run, sink)?;
     if lone {
         lone_piece_columns(&bounds.right[0], false, bounds.rows, clip, run, sink)?;
     } else {
