@@ -23,7 +23,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --modes) modes=$2; shift 2 ;;
     --cores) cores=$2; shift 2 ;;
-    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) break ;;
   esac
 done
