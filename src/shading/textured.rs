@@ -740,10 +740,11 @@ where
         D: DrawTarget<Color = T::Color>,
     {
         let (p, o) = (planes, offset);
-        match (self.bilinear, self.tint.is_some()) {
-            (false, false) => self.paint_sub_spans::<_, NO, NO>(p, run, o, target),
-            (false, true) => self.paint_sub_spans::<_, NO, YES>(p, run, o, target),
-            (true, _) => self.paint_perspective_bilinear(p, run, o, target),
+        // Nearest: bilinear runs go to `paint_perspective_bilinear` (see `PerspectivePainter`).
+        if self.tint.is_some() {
+            self.paint_sub_spans::<_, NO, YES>(p, run, o, target)
+        } else {
+            self.paint_sub_spans::<_, NO, NO>(p, run, o, target)
         }
     }
 
@@ -888,7 +889,12 @@ where
     where
         D: DrawTarget<Color = T::Color>,
     {
+        // Bilinear runs straight to their walk: through `paint_perspective` they paid a
+        // second call per run.
         match self.perspective {
+            Some(planes) if self.painter.bilinear => self
+                .painter
+                .paint_perspective_bilinear(planes, run, offset, target),
             Some(planes) => self.painter.paint_perspective(planes, run, offset, target),
             None => self.painter.paint_linear(run, offset, target),
         }
@@ -1021,12 +1027,7 @@ where
         let (left, right, across) = self.u.linear(u);
         let (top, bottom, down) = self.v.linear(v);
         let texture = &self.texture;
-        let corners = [
-            texture.texel(left, top),
-            texture.texel(right, top),
-            texture.texel(left, bottom),
-            texture.texel(right, bottom),
-        ];
+        let corners = texture.quad(left, right, top, bottom);
         T::Color::bilinear(corners, across >> drop, down >> drop)
     }
 }

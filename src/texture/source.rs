@@ -64,6 +64,32 @@ pub trait TexelSource {
     /// # Ok::<(), trirast::Error>(())
     /// ```
     fn texel(&self, x: u32, y: u32) -> Self::Color;
+
+    /// The texels at columns `left` and `right` of rows `top` and `bottom` (in that order:
+    /// top left, top right, bottom left, bottom right), for bilinear filtering; each within
+    /// [`TexelSource::size`] by the same contract as [`TexelSource::texel`]. Four reads by
+    /// default.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use embedded_graphics::{pixelcolor::Gray8, prelude::*};
+    /// use trirast::texture::{TexelSource, Texels};
+    ///
+    /// let data = [1, 2, 3, 4].map(Gray8::new);
+    /// let texels = Texels::new(&data, 2, 2)?;
+    /// assert_eq!(texels.quad(0, 1, 0, 1), [1, 2, 3, 4].map(Gray8::new));
+    /// # Ok::<(), trirast::Error>(())
+    /// ```
+    #[inline(always)]
+    fn quad(&self, left: u32, right: u32, top: u32, bottom: u32) -> [Self::Color; 4] {
+        [
+            self.texel(left, top),
+            self.texel(right, top),
+            self.texel(left, bottom),
+            self.texel(right, bottom),
+        ]
+    }
 }
 
 /// The texture type of a scene without textures: a [`TexelSource`] no value can have.
@@ -200,9 +226,49 @@ impl<C: PixelColor> TexelSource for Texels<'_, C> {
     #[inline(always)]
     fn texel(&self, x: u32, y: u32) -> C {
         // In range by the caller's contract; an index past the end would be a bug here, and the
-        // slice check turns it into a panic rather than a wrong read.
-        self.pixels[y as usize * self.width as usize + x as usize]
+        // check turns it into a panic rather than a wrong read (see `texel_out_of_range`).
+        let index = y as usize * self.width as usize + x as usize;
+        match self.pixels.get(index) {
+            Some(&texel) => texel,
+            None => texel_out_of_range(index, self.pixels.len()),
+        }
     }
+
+    /// One test of the largest of the four indices instead of one per read: the compiler
+    /// then drops the reads' own (Cortex-M0 bilinear `big` -1.1%, M4F -1.3%).
+    #[inline(always)]
+    fn quad(&self, left: u32, right: u32, top: u32, bottom: u32) -> [C; 4] {
+        let width = self.width as usize;
+        let (top, bottom) = (top as usize * width, bottom as usize * width);
+        let (left, right) = (left as usize, right as usize);
+        let indices = [top + left, top + right, bottom + left, bottom + right];
+        let last = indices[0].max(indices[1]).max(indices[2]).max(indices[3]);
+        if last >= self.pixels.len() {
+            quad_out_of_range(last, self.pixels.len());
+        }
+        indices.map(|i| self.pixels[i])
+    }
+}
+
+/// The panic of a texel read past its texture's end (a bug: callers keep coordinates in
+/// range). Its message is a constant: an indexing panic formats the index and the length,
+/// which links integer formatting (1.7 KB of flash on Cortex-M0, 2 KB on M4F) into every
+/// firmware that draws textures, for the same comparison per read. The index and the length
+/// are passed, unused, as to the indexing panic: without them Cortex-M0's nearest span loop
+/// kept one value fewer in registers (+4% a pixel on `big`).
+#[cold]
+#[inline(never)]
+pub(crate) fn texel_out_of_range(_index: usize, _len: usize) -> ! {
+    panic!("texel read outside its texture")
+}
+
+/// [`texel_out_of_range`] for [`Texels::quad`], cold only from Cortex-M3 up: with a plain
+/// call there Cortex-M0's bilinear loops measured 0.5 to 2.4% faster, M4F's perspective-correct
+/// bilinear ones 1.5 to 4% slower.
+#[cfg_attr(target_has_atomic = "32", cold)]
+#[inline(never)]
+fn quad_out_of_range(index: usize, len: usize) -> ! {
+    texel_out_of_range(index, len)
 }
 
 /// Texels in raw image bytes, packed as embedded-graphics' `ImageRaw` packs them: rows of
@@ -294,13 +360,19 @@ where
     #[inline(always)]
     fn texel(&self, x: u32, y: u32) -> C {
         let bits = C::Raw::BITS_PER_PIXEL;
-        let row = &self.data[y as usize * self.row_bytes..];
+        let Some(row) = self.data.get(y as usize * self.row_bytes..) else {
+            texel_out_of_range(y as usize * self.row_bytes, self.data.len())
+        };
+        let byte_at = |at: usize| match row.get(at) {
+            Some(&byte) => u32::from(byte),
+            None => texel_out_of_range(at, row.len()),
+        };
         let value = if bits >= 8 {
             let bytes = bits / 8;
             let at = x as usize * bytes;
             let mut value = 0u32;
             for i in 0..bytes {
-                let byte = u32::from(row[at + i]);
+                let byte = byte_at(at + i);
                 value = if BO::LITTLE_ENDIAN {
                     value | byte << (8 * i)
                 } else {
@@ -311,7 +383,7 @@ where
         } else {
             // Sub-byte pixels, first pixel in the most significant bits.
             let bit = x as usize * bits;
-            let byte = u32::from(row[bit / 8]);
+            let byte = byte_at(bit / 8);
             byte >> (8 - bits - bit % 8)
         };
         C::Raw::from_u32(value).into()
