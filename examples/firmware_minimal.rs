@@ -10,7 +10,7 @@
 //!
 //! For measuring, `FW_MODE` (read at build time) draws one mode instead: `none` (nothing: the
 //! baseline every other build is measured against), `flat`, `gouraud`, `gouraud-z` (Gouraud
-//! through a depth buffer), `texture` (every filter, wrap and modulation, affine) or
+//! through a depth buffer), `anti-aliased` (flat with anti-aliased edges), `texture` (every filter, wrap and modulation, affine) or
 //! `texture-perspective` (the same, perspective-correct where the `w` differ, affine where
 //! they are equal). Vertices, colours,
 //! depths, coordinates and options pass through `core::hint::black_box`, so the compiler
@@ -29,6 +29,7 @@ use panic_halt as _;
 use trirast::{
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     depth::{DepthBuffer, DepthTarget},
+    target::BlendTarget,
     texture::{Filter, Perspective, Texels, Wrap},
 };
 
@@ -55,6 +56,10 @@ fn main() -> ! {
             let _ = triangle
                 .into_styled(FlatStyle::new(colors[0]))
                 .draw(&mut display);
+        }
+        Some("anti-aliased") => {
+            let style = FlatStyle::new(colors[0]);
+            let _ = display.draw_anti_aliased(&triangle, &style);
         }
         Some("gouraud") => {
             let style = GouraudStyle::new(colors).with_dither(black_box(false));
