@@ -69,10 +69,10 @@ fn main() -> ! {
             let mut depths = [u16::MAX; (WIDTH * HEIGHT) as usize];
             // Errors only for mismatched buffers; `unwrap` would add its formatting to the count.
             let Ok(mut zbuffer) = DepthBuffer::new(&mut depths, WIDTH, HEIGHT) else {
-                loop {}
+                halt();
             };
             let Ok(mut scene) = DepthTarget::new(&mut display, &mut zbuffer) else {
-                loop {}
+                halt();
             };
             let _ = scene.draw(
                 &triangle,
@@ -83,7 +83,7 @@ fn main() -> ! {
         Some(mode @ ("texture" | "texture-perspective")) => {
             let texels = black_box([Rgb565::WHITE, Rgb565::BLACK, Rgb565::RED, Rgb565::BLUE]);
             let Ok(texture) = Texels::new(&texels, 2, 2) else {
-                loop {}
+                halt();
             };
             let at = |u: i32, v: i32| [I16F16::from_num(u), I16F16::from_num(v)];
             let coordinates = black_box([at(0, 0), at(5, 0), at(0, 7)]);
@@ -134,6 +134,12 @@ fn main() -> ! {
         let _ = out.write_all(&line);
     }
     debug::exit(debug::EXIT_SUCCESS);
+    halt()
+}
+
+/// Stops here for good: what the error branches do (a panic's message and location would
+/// add to a mode's share, `unwrap`'s its formatting too).
+fn halt() -> ! {
     loop {
         cortex_m::asm::wfi();
     }
