@@ -10,8 +10,8 @@
 # fails when a budget is exceeded (else it marks them): every mode's firmware 64 KB of .text (also
 # reported for the six modes the firmware had when that budget was set); flat 6 KB, Gouraud 8 KB, Gouraud +
 # depth 10 KB, a texture style with every filter, wrap and modulation 12 KB (affine; the same
-# with a perspective, and flat with anti-aliased edges, are reported beside them, without a
-# budget of their own).
+# with a perspective, flat with anti-aliased edges and an indexed mesh of flat triangles are
+# reported beside them, without a budget of their own).
 #
 # Needs `arm-none-eabi-size`/`-nm`/`-objdump` (Debian: binutils-arm-none-eabi) or LLVM's
 # `llvm-size`/`llvm-nm`/`llvm-objdump`; installs the former with apt-get when neither is there.
@@ -59,7 +59,7 @@ for target in "${targets[@]}"; do
   [ "$(section "$six" .text)" -le 65536 ] || { echo "OVER BUDGET: six-mode firmware" >&2; failures=$((failures + 1)); }
   none=$(build firmware_minimal none)
   row "firmware_minimal, nothing drawn" "$(section "$none" .text)" "$(section "$none" .rodata)" "-" "-"
-  for mode_budget in flat:6144 gouraud:8192 gouraud-z:10240 texture:12288 texture-perspective:- anti-aliased:-; do
+  for mode_budget in flat:6144 gouraud:8192 gouraud-z:10240 texture:12288 texture-perspective:- anti-aliased:- mesh:-; do
     mode=${mode_budget%%:*} budget=${mode_budget#*:}
     elf=$(build firmware_minimal "$mode")
     share=$(( $(code "$elf") - $(code "$none") ))

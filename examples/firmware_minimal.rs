@@ -10,7 +10,8 @@
 //!
 //! For measuring, `FW_MODE` (read at build time) draws one mode instead: `none` (nothing: the
 //! baseline every other build is measured against), `flat`, `gouraud`, `gouraud-z` (Gouraud
-//! through a depth buffer), `anti-aliased` (flat with anti-aliased edges), `texture` (every filter, wrap and modulation, affine) or
+//! through a depth buffer), `mesh` (an indexed mesh of flat triangles, clockwise ones culled),
+//! `anti-aliased` (flat with anti-aliased edges), `texture` (every filter, wrap and modulation, affine) or
 //! `texture-perspective` (the same, perspective-correct where the `w` differ, affine where
 //! they are equal). Vertices, colours,
 //! depths, coordinates and options pass through `core::hint::black_box`, so the compiler
@@ -29,6 +30,7 @@ use panic_halt as _;
 use trirast::{
     FlatStyle, Framebuffer, GouraudStyle, TextureStyle, Triangle,
     depth::{DepthBuffer, DepthTarget},
+    mesh::{Cull, Mesh},
     target::BlendTarget,
     texture::{Filter, Perspective, Texels, Wrap},
 };
@@ -56,6 +58,20 @@ fn main() -> ! {
             let _ = triangle
                 .into_styled(FlatStyle::new(colors[0]))
                 .draw(&mut display);
+        }
+        Some("mesh") => {
+            let points = black_box([
+                Point::new(10, 10),
+                Point::new(300, 40),
+                Point::new(60, 220),
+                Point::new(310, 230),
+            ]);
+            let Ok(mesh) = Mesh::new(&points, black_box(&[[0, 1, 2], [1, 3, 2]])) else {
+                halt();
+            };
+            let _ = mesh.draw(&mut display, black_box(Cull::Clockwise), |k, _| {
+                FlatStyle::new(colors[k % 3])
+            });
         }
         Some("anti-aliased") => {
             let style = FlatStyle::new(colors[0]);
