@@ -500,6 +500,34 @@ mod tests {
         pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, Rgb565, Rgb888},
     };
 
+    /// `Texels::quad`, with its single test, reads what four `texel` reads do, for every
+    /// corner order the wrap modes produce (right of left or wrapped to column 0, the same
+    /// for rows) on textures of several shapes.
+    #[test]
+    fn quad_is_four_reads() {
+        for (width, height) in [(1, 1), (2, 3), (5, 2), (7, 7)] {
+            let data: [Gray8; 49] = core::array::from_fn(|i| Gray8::new(i as u8 * 5));
+            let len = (width * height) as usize;
+            let texels = Texels::new(&data[..len], width, height).unwrap();
+            for top in 0..height {
+                for bottom in 0..height {
+                    for left in 0..width {
+                        for right in 0..width {
+                            let want = [
+                                texels.texel(left, top),
+                                texels.texel(right, top),
+                                texels.texel(left, bottom),
+                                texels.texel(right, bottom),
+                            ];
+                            let got = texels.quad(left, right, top, bottom);
+                            assert_eq!(got, want, "{width}x{height} {left} {right} {top} {bottom}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Every texel of a raw source equals what `ImageRaw` decodes from the same bytes.
     fn agrees<C, BO>(data: &[u8], width: u32, height: u32)
     where
