@@ -444,11 +444,11 @@ impl<P: Coord> RowBoundaries<P> {
     /// Coverage of column `column` (in 1/4096 pixels), in units of [`FULL`].
     #[inline]
     fn coverage(&self, column: P) -> P {
-        let right: P = self.right[..self.rights]
+        let right: P = first(&self.right, self.rights)
             .iter()
             .map(|p| p.area_left_of(column))
             .sum();
-        let left: P = self.left[..self.lefts]
+        let left: P = first(&self.left, self.lefts)
             .iter()
             .map(|p| p.area_left_of(column))
             .sum();
@@ -502,7 +502,7 @@ impl<P: Coord> Chain<P> {
     /// common row.
     #[inline(always)]
     fn crosses(&self, top: P) -> bool {
-        self.edges[..self.count]
+        first(&self.edges, self.count)
             .get(self.next)
             .is_some_and(|edge| edge.a.y < top && edge.b.y > top + P::PIXEL)
     }
@@ -510,7 +510,7 @@ impl<P: Coord> Chain<P> {
     /// The piece of the strip `top..top + ONE` that [`Chain::crosses`] found.
     #[inline(always)]
     fn across(&mut self, top: P) -> Piece<P> {
-        let edge = &mut self.edges[self.next];
+        let edge = at_mut(&mut self.edges, self.next);
         let (start_x, end_x) = (edge.x_at(top), edge.x_at(top + P::PIXEL));
         edge.piece(P::PIXEL, start_x, end_x)
     }
@@ -525,11 +525,11 @@ impl<P: Coord> Chain<P> {
             return 1;
         }
         let bottom = top + P::PIXEL;
-        while self.next < self.count && self.edges[self.next].b.y <= top {
+        while self.next < self.count && at(&self.edges, self.next).b.y <= top {
             self.next += 1;
         }
         let mut count = 0;
-        for edge in &mut self.edges[self.next..self.count] {
+        for edge in within_mut(&mut self.edges, self.next, self.count) {
             if edge.a.y >= bottom {
                 break;
             }
@@ -544,12 +544,60 @@ impl<P: Coord> Chain<P> {
                 (bottom, edge.x_at(bottom))
             };
             if end > start {
-                out[count] = edge.piece(end - start, start_x, end_x);
+                *at_mut(out, count) = edge.piece(end - start, start_x, end_x);
                 count += 1;
             }
         }
         count
     }
+}
+
+/// Item `index` of `items`: indexing, but its panic (a bug: every index here is counted as
+/// its item is written) has a constant message. An indexing panic formats its bounds, which
+/// linked about 2 KB of integer formatting into every firmware that anti-aliases; the index
+/// and length are passed, unused, so that the code around keeps the shape it had.
+#[inline(always)]
+fn at<T>(items: &[T], index: usize) -> &T {
+    match items.get(index) {
+        Some(item) => item,
+        None => out_of_range(index, items.len()),
+    }
+}
+
+/// [`at`], mutable.
+#[inline(always)]
+fn at_mut<T>(items: &mut [T], index: usize) -> &mut T {
+    let len = items.len();
+    match items.get_mut(index) {
+        Some(item) => item,
+        None => out_of_range(index, len),
+    }
+}
+
+/// The first `count` of `items`, as [`at`].
+#[inline(always)]
+fn first<T>(items: &[T], count: usize) -> &[T] {
+    match items.get(..count) {
+        Some(part) => part,
+        None => out_of_range(count, items.len()),
+    }
+}
+
+/// Items `from..to` of `items`, mutable, as [`at`].
+#[inline(always)]
+fn within_mut<T>(items: &mut [T], from: usize, to: usize) -> &mut [T] {
+    let len = items.len();
+    match items.get_mut(from..to) {
+        Some(part) => part,
+        None => out_of_range(to, len),
+    }
+}
+
+/// The panic of [`at`] and its kin.
+#[cold]
+#[inline(never)]
+fn out_of_range(_index: usize, _len: usize) -> ! {
+    panic!("anti-aliasing: an index past what it counts")
 }
 
 /// Coverage (units of [`FULL`], 0 to `FULL`) as an opacity, 0 to 255, rounded.
@@ -746,7 +794,7 @@ impl EdgeRun {
         if self.len == 0 {
             self.x = column;
         }
-        self.coverages[self.len] = coverage;
+        *at_mut(&mut self.coverages, self.len) = coverage;
         self.len += 1;
         Ok(())
     }
@@ -759,7 +807,7 @@ impl EdgeRun {
             sink.edge(
                 self.x.wrapping_add(self.origin),
                 self.y,
-                &self.coverages[..len],
+                first(&self.coverages, len),
             )?;
         }
         Ok(())
@@ -918,7 +966,10 @@ fn walk_chains<P: Coord, K: CoverageSink>(
         } else {
             bounds.lefts = left.pieces(strip, &mut bounds.left);
             bounds.rights = right.pieces(strip, &mut bounds.right);
-            bounds.rows = bounds.left[..bounds.lefts].iter().map(|p| p.rows).sum();
+            bounds.rows = first(&bounds.left, bounds.lefts)
+                .iter()
+                .map(|p| p.rows)
+                .sum();
         }
         if bounds.lefts == 0 || bounds.rights == 0 || bounds.rows == P::ZERO {
             continue;
@@ -989,8 +1040,8 @@ fn row_coverage<P: Coord, K: CoverageSink>(
     run: &mut EdgeRun,
     sink: &mut K,
 ) -> Result<(), K::Error> {
-    let (left_start, left_end) = RowBoundaries::columns(&bounds.left[..bounds.lefts]);
-    let (right_start, right_end) = RowBoundaries::columns(&bounds.right[..bounds.rights]);
+    let (left_start, left_end) = RowBoundaries::columns(first(&bounds.left, bounds.lefts));
+    let (right_start, right_end) = RowBoundaries::columns(first(&bounds.right, bounds.rights));
     if left_end >= right_start {
         // The boundaries share columns: every column is a boundary column.
         boundary_columns(bounds, (left_start, right_end), clip, run, sink)?;
