@@ -64,6 +64,7 @@
 
 mod arch;
 pub mod band;
+mod bounds;
 pub mod coverage;
 pub mod depth;
 mod error;

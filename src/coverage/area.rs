@@ -29,6 +29,7 @@ use core::{
 use embedded_graphics::primitives::Rectangle;
 
 use super::Span;
+use crate::bounds::{at, at_mut, first, within_mut};
 use crate::geometry::Triangle;
 use crate::setup::{
     Lane,
@@ -550,54 +551,6 @@ impl<P: Coord> Chain<P> {
         }
         count
     }
-}
-
-/// Item `index` of `items`: indexing, but its panic (a bug: every index here is counted as
-/// its item is written) has a constant message. An indexing panic formats its bounds, which
-/// linked about 2 KB of integer formatting into every firmware that anti-aliases; the index
-/// and length are passed, unused, so that the code around keeps the shape it had.
-#[inline(always)]
-fn at<T>(items: &[T], index: usize) -> &T {
-    match items.get(index) {
-        Some(item) => item,
-        None => out_of_range(index, items.len()),
-    }
-}
-
-/// [`at`], mutable.
-#[inline(always)]
-fn at_mut<T>(items: &mut [T], index: usize) -> &mut T {
-    let len = items.len();
-    match items.get_mut(index) {
-        Some(item) => item,
-        None => out_of_range(index, len),
-    }
-}
-
-/// The first `count` of `items`, as [`at`].
-#[inline(always)]
-fn first<T>(items: &[T], count: usize) -> &[T] {
-    match items.get(..count) {
-        Some(part) => part,
-        None => out_of_range(count, items.len()),
-    }
-}
-
-/// Items `from..to` of `items`, mutable, as [`at`].
-#[inline(always)]
-fn within_mut<T>(items: &mut [T], from: usize, to: usize) -> &mut [T] {
-    let len = items.len();
-    match items.get_mut(from..to) {
-        Some(part) => part,
-        None => out_of_range(to, len),
-    }
-}
-
-/// The panic of [`at`] and its kin.
-#[cold]
-#[inline(never)]
-fn out_of_range(_index: usize, _len: usize) -> ! {
-    panic!("anti-aliasing: an index past what it counts")
 }
 
 /// Coverage (units of [`FULL`], 0 to `FULL`) as an opacity, 0 to 255, rounded.

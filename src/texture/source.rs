@@ -12,6 +12,7 @@ use embedded_graphics::{
 };
 
 use crate::Error;
+use crate::bounds::{at, from, out_of_range};
 
 /// A rectangle of texels with random access: what texture sampling reads.
 ///
@@ -226,12 +227,8 @@ impl<C: PixelColor> TexelSource for Texels<'_, C> {
     #[inline(always)]
     fn texel(&self, x: u32, y: u32) -> C {
         // In range by the caller's contract; an index past the end would be a bug here, and the
-        // check turns it into a panic rather than a wrong read (see `texel_out_of_range`).
-        let index = y as usize * self.width as usize + x as usize;
-        match self.pixels.get(index) {
-            Some(&texel) => texel,
-            None => texel_out_of_range(index, self.pixels.len()),
-        }
+        // check turns it into a panic rather than a wrong read (see `crate::bounds`).
+        *at(self.pixels, y as usize * self.width as usize + x as usize)
     }
 
     /// One test of the largest of the four indices instead of one per read: the compiler
@@ -250,25 +247,13 @@ impl<C: PixelColor> TexelSource for Texels<'_, C> {
     }
 }
 
-/// The panic of a texel read past its texture's end (a bug: callers keep coordinates in
-/// range). Its message is a constant: an indexing panic formats the index and the length,
-/// which links integer formatting (1.7 KB of flash on Cortex-M0, 2 KB on M4F) into every
-/// firmware that draws textures, for the same comparison per read. The index and the length
-/// are passed, unused, as to the indexing panic: without them Cortex-M0's nearest span loop
-/// kept one value fewer in registers (+4% a pixel on `big`).
-#[cold]
-#[inline(never)]
-pub(crate) fn texel_out_of_range(_index: usize, _len: usize) -> ! {
-    panic!("texel read outside its texture")
-}
-
-/// [`texel_out_of_range`] for [`Texels::quad`], cold only from Cortex-M3 up: with a plain
-/// call there Cortex-M0's bilinear loops measured 0.5 to 2.4% faster, M4F's perspective-correct
+/// [`out_of_range`] for [`Texels::quad`], cold only from Cortex-M3 up: with a plain call
+/// there Cortex-M0's bilinear loops measured 0.5 to 2.4% faster, M4F's perspective-correct
 /// bilinear ones 1.5 to 4% slower.
 #[cfg_attr(target_has_atomic = "32", cold)]
 #[inline(never)]
 fn quad_out_of_range(index: usize, len: usize) -> ! {
-    texel_out_of_range(index, len)
+    out_of_range(index, len)
 }
 
 /// Texels in raw image bytes, packed as embedded-graphics' `ImageRaw` packs them: rows of
@@ -360,13 +345,8 @@ where
     #[inline(always)]
     fn texel(&self, x: u32, y: u32) -> C {
         let bits = C::Raw::BITS_PER_PIXEL;
-        let Some(row) = self.data.get(y as usize * self.row_bytes..) else {
-            texel_out_of_range(y as usize * self.row_bytes, self.data.len())
-        };
-        let byte_at = |at: usize| match row.get(at) {
-            Some(&byte) => u32::from(byte),
-            None => texel_out_of_range(at, row.len()),
-        };
+        let row = from(self.data, y as usize * self.row_bytes);
+        let byte_at = |index: usize| u32::from(*at(row, index));
         let value = if bits >= 8 {
             let bytes = bits / 8;
             let at = x as usize * bytes;
