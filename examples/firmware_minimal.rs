@@ -44,7 +44,7 @@ fn main() -> ! {
     // In firmware this would be your display driver's DrawTarget (mipidsi, ssd1306, ...).
     // Not `unwrap`: its message would link the error's `Debug` and `core::fmt`.
     let Ok(mut display) = Framebuffer::new(&mut pixels, WIDTH, HEIGHT) else {
-        panic!("buffer sizes");
+        halt();
     };
     let triangle = black_box(Triangle::new(
         Point::new(10, 10),
