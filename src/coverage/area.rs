@@ -17,7 +17,7 @@
 //! boundary crosses a column is found with a per-edge reciprocal. Positions and crossings are
 //! kept to within 1/4096 pixel, each costing a pixel at most 3/4096 of its area per boundary
 //! piece, of which at most four cross a pixel: each coverage is within 1/256 of the exact
-//! area before rounding to 1/255 (`tests/antialias.rs` checks it against exact rational
+//! area before rounding to 1/255 (`tests/suite/antialias.rs` checks it against exact rational
 //! clipping).
 
 use core::{

@@ -324,7 +324,7 @@ mod tests {
     }
 
     /// Walking band by band, going on from each band's kept walk, gives the whole walk's spans
-    /// (which `tests/coverage_reference.rs` checks against exact half-space tests): upper and
+    /// (which `tests/suite/coverage_reference.rs` checks against exact half-space tests): upper and
     /// lower stretches, turns on a band's first row and below its last, flat tops and bottoms,
     /// both rules, bands of one row and more, windows cutting columns.
     #[test]

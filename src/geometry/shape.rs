@@ -258,7 +258,7 @@ impl Shape for SubPixelTriangle {
         clip: &Rectangle,
         sink: &mut K,
     ) -> Result<(), K::Error> {
-        // Whole-pixel vertices cover what the whole-pixel walk covers (tests/subpixel.rs):
+        // Whole-pixel vertices cover what the whole-pixel walk covers (tests/suite/subpixel.rs):
         // one walk is built, not both.
         walk_subpixel(self, rule, clip, sink)
     }

@@ -105,7 +105,7 @@ impl<C> GouraudStyle<C> {
     /// is dithered: a pixel takes the exact value plus its threshold (1/32, 3/32, ... 31/32),
     /// rounded down, so the mean of each 4x4 block of the pattern is the exact mean within
     /// 1/32 of a level plus 1.5 times the channel's change from one pixel to the next across
-    /// and down (`tests/gouraud.rs` checks both). Colour types whose channels share one 64-bit
+    /// and down (`tests/suite/gouraud.rs` checks both). Colour types whose channels share one 64-bit
     /// integer (`Rgb565`, `Rgb555`, `Rgb666`, their `Bgr` twins) step all channels with one
     /// addition, as when rounding, within 1/64 + 2^-15 of a level of the exact value: a pixel
     /// within that of a threshold may take the level beside it, and the bound on a block's

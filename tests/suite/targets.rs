@@ -1,7 +1,7 @@
 //! How drawing talks to targets: one `fill_solid` per covered row, errors passed through, and
 //! the same pixels on the simulator's display as in the crate's framebuffer.
 
-mod common;
+use crate::common;
 
 use common::{CountingTarget, Failed, FailingTarget, Offset, Rng};
 use embedded_graphics::{

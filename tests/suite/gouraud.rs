@@ -3,7 +3,7 @@
 //! same coverage as flat filling, watertight meshes, and dithering that follows the exact value.
 #![allow(clippy::needless_range_loop)] // parallel channel arrays read best indexed
 
-mod common;
+use crate::common;
 
 use common::{
     CountingTarget, Offset, Recorder, Rng, Rule, exact_plane, reference_covers, reference_pixels,

@@ -2,7 +2,7 @@
 //! coverage; the user shader's interpolated attributes against the exact plane.
 #![allow(clippy::needless_range_loop)] // parallel channel arrays read best indexed
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rule, exact_plane, reference_covers, round_half_up, window_points};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};

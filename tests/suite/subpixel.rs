@@ -3,7 +3,7 @@
 //! vertices give exactly what `Triangle` gives; meshes with shared sub-pixel vertices cover
 //! every pixel once; and a triangle sliding by 1/256 pixel changes each pixel at most once.
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rng, Rule, exact_plane, jittered_grid, reference_covers, window_points};
 use embedded_graphics::{

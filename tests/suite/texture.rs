@@ -4,7 +4,7 @@
 //! identity mappings are reproduced exactly, and bad input neither panics nor strays.
 #![allow(clippy::needless_range_loop)] // parallel channel arrays read best indexed
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rng, Rule, exact_plane, reference_covers, window_points};
 use embedded_graphics::{

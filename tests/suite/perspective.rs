@@ -6,7 +6,7 @@
 
 #![allow(clippy::needless_range_loop)] // the two coordinates, side by side, read best indexed
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rng, Rule, reference_covers, window_points};
 use embedded_graphics::{

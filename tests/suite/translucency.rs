@@ -2,7 +2,7 @@
 //! was there (within 3/5 of a level per channel: `Rgb565` blends in 256ths), blended once, and nothing else changes;
 //! opacity 255 draws what opaque drawing draws.
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rng, Rule, jittered_grid, reference_covers};
 use embedded_graphics::{

@@ -2,7 +2,7 @@
 //! computed here by clipping the triangle to the square in exact rational arithmetic; and
 //! anti-aliased drawing, which blends each pixel by that coverage.
 
-mod common;
+use crate::common;
 
 use common::{Rule, exact_plane, reference_covers};
 use embedded_graphics::{prelude::*, primitives::Rectangle};

@@ -2,7 +2,7 @@
 //! kind: small, huge, off-screen, slivers, flat-topped and flat-bottomed, degenerate, and with
 //! vertices anywhere in the `i32` range, on targets placed anywhere.
 
-mod common;
+use crate::common;
 
 use common::{
     CountingTarget, Offset, Rule, reference_covers, reference_pixels, window_contains,

@@ -1,8 +1,6 @@
 //! Coverage does not depend on vertex order, winding, or where on the integer grid the triangle
 //! sits (including moves from the 32-bit fast path to the 64-bit wide path).
 
-mod common;
-
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use trirast::{FAST_LIMIT, FillRule, Triangle, coverage::Span, coverage::for_each_span};

@@ -3,7 +3,7 @@
 //! depths differ, equal depths following the test, every style agreeing with plain drawing,
 //! and meshes staying watertight and culling by winding.
 
-mod common;
+use crate::common;
 
 use common::{Recorder, Rng, Rule, exact_plane, reference_covers, window_points};
 use embedded_graphics::{

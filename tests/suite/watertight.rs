@@ -1,7 +1,7 @@
 //! Meshes under the top-left rule: every pixel inside is drawn exactly once, nothing outside,
 //! whatever the winding of each triangle.
 
-mod common;
+use crate::common;
 
 use common::{CountingTarget, Offset, Rng, Rule, jittered_grid, reference_covers, window_points};
 use embedded_graphics::{

@@ -3,7 +3,7 @@
 //! without kept set-ups); each band reaches the display as one `fill_contiguous` call; misuse
 //! is reported.
 
-mod common;
+use crate::common;
 
 use common::{CountingTarget, Offset, Rng};
 use embedded_graphics::{
